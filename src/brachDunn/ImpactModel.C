@@ -1,0 +1,323 @@
+#include "ImpactModel.H"
+
+#include <algorithm>
+#include <limits>
+
+namespace brachDunn
+{
+
+ImpactModel::ImpactModel
+(
+    const ElasticMaterial& particleMaterial,
+    const ElasticMaterial& wallMaterial,
+    const RestitutionLaw& restitution,
+    const AdhesionLaw& adhesion,
+    const FrictionLaw& friction,
+    double momentCoeff,
+    double minReboundSpeed
+)
+:
+    particleMaterial_(particleMaterial),
+    wallMaterial_(wallMaterial),
+    restitution_(restitution),
+    adhesion_(adhesion),
+    friction_(friction),
+    momentCoeff_(momentCoeff),
+    minReboundSpeed_(minReboundSpeed)
+{
+    particleMaterial_.check();
+    wallMaterial_.check();
+    requireInRange("momentCoeff", momentCoeff_, -1, 1);
+    requireNonNegative("minReboundSpeed", minReboundSpeed_);
+
+    complianceSum_ = particleMaterial_.compliance() + wallMaterial_.compliance();
+    contactModulus_ = 1/(pi*complianceSum_);
+    contactRadiusFactor_ = 15*pi/8*complianceSum_;
+}
+
+
+ImpactResult ImpactModel::impact
+(
+    const Particle& particle,
+    double un,
+    double ut,
+    double spin
+) const
+{
+    particle.check();
+    requireFinite("un", un);
+    requireNonNegative("ut", ut);
+    requireFinite("spin", spin);
+
+    ImpactResult res;
+    res.un = un;
+    res.ut = ut;
+    res.spin = spin;
+
+    if (!(un > 0))
+    {
+        // Moving away from (or along) the wall: left alone
+        res.outcome = Outcome::notApproaching;
+        res.unOut = -un;
+        res.utOut = ut;
+        res.spinOut = spin;
+        return res;
+    }
+
+    const double m = particle.mass();
+    const double r = particle.radius();
+    const double normalKE = 0.5*m*un*un;
+
+    res.R = restitution_(un, particle.rho, contactModulus_);
+    const AdhesionLaw::Work work =
+        adhesion_(un, contactRadiusSqr(r, normalKE), r);
+    res.gamma = work.gamma;
+    res.WA = work.WA;
+
+    const double elasticKE = res.R*res.R*normalKE;
+    res.deformationLoss = normalKE - elasticKE;
+
+    // WA <= 0, so elasticKE > 0 whenever the rebound energy is positive
+    if (elasticKE + res.WA > 0)
+    {
+        res.unOut = res.R*un*std::sqrt(1 + res.WA/elasticKE);
+        res.cause =
+            res.unOut < minReboundSpeed_
+          ? CaptureCause::reboundFloor
+          : CaptureCause::none;
+    }
+    else
+    {
+        res.cause = CaptureCause::adhesion;
+    }
+
+    if (res.cause != CaptureCause::none)
+    {
+        res.outcome = Outcome::captured;
+        res.unOut = 0;
+        res.utOut = 0;
+        res.spinOut = 0;
+        res.normalImpulse = m*un;
+        res.tangentialImpulse = m*ut;
+        res.impulseRatio =
+            std::min(ut/un, std::numeric_limits<double>::max());
+        res.adhesionLoss = elasticKE;
+        res.frictionLoss = 0.5*m*ut*ut;
+        res.energyLoss = normalKE + res.frictionLoss;
+        return res;
+    }
+
+    res.outcome = Outcome::rebound;
+    res.normalImpulse = m*(un + res.unOut);
+
+    // Sliding stops (sticking) unless the Coulomb limit is reached first
+    const double slidingImpulse = friction_.coefficient()*res.normalImpulse;
+    if (slidingImpulse < m*ut)
+    {
+        res.tangentialImpulse = slidingImpulse;
+        res.utOut = ut - slidingImpulse/m;
+    }
+    else
+    {
+        res.tangentialImpulse = m*ut;
+        res.utOut = 0;
+    }
+    res.impulseRatio = res.tangentialImpulse/res.normalImpulse;
+
+    // Omega = -e_m (omega + r P_t/I), with r P_t/I = (5/2)(ut - Ut')/r
+    res.spinOut = -momentCoeff_*(spin + 2.5*(ut - res.utOut)/r);
+
+    res.adhesionLoss = -res.WA;
+    res.frictionLoss = 0.5*m*(ut*ut - res.utOut*res.utOut);
+    res.energyLoss = res.deformationLoss + res.adhesionLoss + res.frictionLoss;
+
+    return res;
+}
+
+
+Impact3D ImpactModel::impact
+(
+    const Particle& particle,
+    const Vector3& U,
+    const Vector3& n,
+    const Vector3& omega
+) const
+{
+    for (double component : {U.x, U.y, U.z})
+    {
+        requireFinite("U", component);
+    }
+    for (double component : {omega.x, omega.y, omega.z})
+    {
+        requireFinite("omega", component);
+    }
+    const double nMag = mag(n);
+    requirePositive("|n|", nMag);
+    const Vector3 normal = (1/nMag)*n;
+
+    const double Un = dot(U, normal);
+    const Vector3 Ut = U - Un*normal;
+    const double ut = mag(Ut);
+
+    // The incident plane is spanned by n and t; without tangential motion,
+    // by n and the tangential spin, about which the moment coefficient acts
+    Vector3 t;
+    if (ut > 0)
+    {
+        t = (1/ut)*Ut;
+    }
+    else
+    {
+        const Vector3 spinTangential = omega - dot(omega, normal)*normal;
+        const double spinMag = mag(spinTangential);
+        if (spinMag > 0)
+        {
+            t = cross((1/spinMag)*spinTangential, normal);
+        }
+    }
+    const Vector3 b = cross(normal, t);
+    const double spin = dot(omega, b);
+
+    Impact3D out;
+    out.result = impact(particle, -Un, ut, spin);
+
+    switch (out.result.outcome)
+    {
+        case Outcome::notApproaching:
+            out.U = U;
+            out.omega = omega;
+            break;
+        case Outcome::captured:
+            break;
+        case Outcome::rebound:
+            out.U = out.result.unOut*normal + out.result.utOut*t;
+            out.omega = omega + (out.result.spinOut - spin)*b;
+            break;
+    }
+    return out;
+}
+
+
+HertzContact ImpactModel::hertz(const Particle& particle, double un) const
+{
+    particle.check();
+    requirePositive("un", un);
+
+    const double m = particle.mass();
+    const double r = particle.radius();
+    const double aSqr = contactRadiusSqr(r, 0.5*m*un*un);
+    const double approach = aSqr/r;
+
+    return
+    {
+        m,
+        std::sqrt(aSqr),
+        approach,
+        4.0/3*contactModulus_*std::sqrt(r)*std::pow(approach, 1.5),
+        2.94*approach/un,
+        contactModulus_
+    };
+}
+
+
+AdhesionLaw::Work ImpactModel::measuredAdhesion
+(
+    const Particle& particle,
+    double un,
+    double unOut
+) const
+{
+    particle.check();
+    requirePositive("un", un);
+    requireNonNegative("unOut", unOut);
+
+    const double m = particle.mass();
+    const double r = particle.radius();
+    const double normalKE = 0.5*m*un*un;
+    const double R = restitution_(un, particle.rho, contactModulus_);
+    const double ratio = unOut/un;
+    const double WA = normalKE*(ratio*ratio - R*R);
+
+    return {-WA/(pi*contactRadiusSqr(r, normalKE)), WA};
+}
+
+
+double ImpactModel::reboundEnergy
+(
+    const Particle& particle,
+    double speed,
+    double adhesionScale,
+    double* Rptr
+) const
+{
+    const double m = particle.mass();
+    const double r = particle.radius();
+    const double normalKE = 0.5*m*speed*speed;
+    const double R = restitution_(speed, particle.rho, contactModulus_);
+    const double WA = adhesion_(speed, contactRadiusSqr(r, normalKE), r).WA;
+    if (Rptr) *Rptr = R;
+    return R*R*normalKE + adhesionScale*WA;
+}
+
+
+CriticalSpeed ImpactModel::criticalSpeed
+(
+    const Particle& particle,
+    double eta,
+    CriticalMethod method
+) const
+{
+    particle.check();
+    requireNonNegative("eta", eta);
+
+    const double obliquity = std::sqrt(1 + eta*eta);
+
+    // Rebound energy as a function of the speed searched: the normal speed
+    // (consistent) or the total speed with laws at that speed (paper)
+    const double adhesionScale =
+        method == CriticalMethod::consistent ? 1 : obliquity*obliquity;
+    const auto energy = [&](double speed, double* R = nullptr)
+    {
+        return reboundEnergy(particle, speed, adhesionScale, R);
+    };
+    const auto result = [&](CriticalSpeed::Status status, double speed)
+    {
+        double R = 0;
+        energy(std::max(speed, CriticalSpeed::minSpeed), &R);
+        const double normal =
+            method == CriticalMethod::consistent ? speed : speed/obliquity;
+        const double total =
+            method == CriticalMethod::consistent ? speed*obliquity : speed;
+        return CriticalSpeed{status, normal, total, R};
+    };
+
+    // Walk up from the bottom of the range to the first rebounding speed,
+    // then bisect between it and the captured speed below it
+    constexpr double step = 1.0592537251772889;     // 10^(1/40)
+    double lower = CriticalSpeed::minSpeed;
+    if (energy(lower) > 0)
+    {
+        return result(CriticalSpeed::Status::neverCaptured, 0);
+    }
+    double upper = lower*step;
+    while (!(energy(upper) > 0))
+    {
+        lower = upper;
+        upper *= step;
+        if (upper > CriticalSpeed::maxSpeed)
+        {
+            return result
+            (
+                CriticalSpeed::Status::alwaysCaptured, CriticalSpeed::maxSpeed
+            );
+        }
+    }
+    for (int iter = 0; iter < 200 && upper - lower > 1e-15*upper; ++iter)
+    {
+        const double middle = 0.5*(lower + upper);
+        (energy(middle) > 0 ? upper : lower) = middle;
+    }
+    return result(CriticalSpeed::Status::found, 0.5*(lower + upper));
+}
+
+} // End namespace brachDunn
