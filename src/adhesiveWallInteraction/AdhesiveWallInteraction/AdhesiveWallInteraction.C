@@ -1,0 +1,736 @@
+#include "AdhesiveWallInteraction.H"
+#include "Pstream.H"
+#include "cloud.H"
+
+#include <type_traits>
+#include <utility>
+
+// * * * * * * * * * * * * * * * Local Helpers * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace adhesiveWallInteractionDetail
+{
+
+//- Parcels of colliding clouds carry angular momentum (and their cloud's
+//  constant properties carry youngsModulus and poissonsRatio)
+template<class Parcel, class = void>
+struct isColliding : std::false_type {};
+
+template<class Parcel>
+struct isColliding
+<
+    Parcel,
+    std::void_t<decltype(std::declval<Parcel&>().angularMomentum())>
+>
+: std::true_type {};
+
+inline brachDunn::Vector3 toCore(const vector& v)
+{
+    return {v.x(), v.y(), v.z()};
+}
+
+inline vector fromCore(const brachDunn::Vector3& v)
+{
+    return vector(v.x, v.y, v.z);
+}
+
+//- Columns of one impact record
+enum recordColumn : label
+{
+    rTime, rPatch, rFace, rX, rY, rZ, rDiameter, rNParticle,
+    rUn, rUt, rFate, rR, rWA, rUnOut, rUtOut, recordSize
+};
+
+const char* const fateNames[] = {"rebound", "capture", "escape"};
+
+} // End namespace adhesiveWallInteractionDetail
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::fileName Foam::AdhesiveWallInteraction<CloudType>::outputDir() const
+{
+    const Time& time = this->owner().mesh().time();
+    return
+        time.globalPath()/"postProcessing"/cloud::prefix
+       /this->owner().name()/typeName/time.timeName();
+}
+
+
+template<class CloudType>
+brachDunn::ElasticMaterial
+Foam::AdhesiveWallInteraction<CloudType>::particleMaterial() const
+{
+    using parcelType = typename CloudType::parcelType;
+    const dictionary& coeffs = this->coeffDict();
+
+    if (coeffs.isDict("particle"))
+    {
+        return readElasticMaterial(coeffs.subDict("particle"));
+    }
+
+    if constexpr (adhesiveWallInteractionDetail::isColliding<parcelType>::value)
+    {
+        const auto& props = this->owner().constProps();
+        const brachDunn::ElasticMaterial material
+        {
+            props.youngsModulus(), props.poissonsRatio()
+        };
+        checkedCoreCall(coeffs, [&]{ material.check(); });
+        return material;
+    }
+
+    FatalIOErrorInFunction(coeffs)
+        << "In dictionary " << coeffs.name() << ": keyword 'particle' is"
+        << " missing. Clouds that are not colliding clouds need the"
+        << " particle's elastic constants: particle { E <Pa>; nu <->; }"
+        << nl << exit(FatalIOError);
+    return {};
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::count
+(
+    const typename CloudType::parcelType& p,
+    const polyPatch& pp,
+    fate outcome,
+    scalar un,
+    scalar ut,
+    scalar R,
+    scalar WA,
+    scalar unOut,
+    scalar utOut
+)
+{
+    using namespace adhesiveWallInteractionDetail;
+
+    const scalar nParticle = p.nParticle();
+    const scalar mass = nParticle*p.mass();
+    const scalar speed = Foam::sqrt(un*un + ut*ut);
+    const scalar angle = radToDeg(Foam::atan2(ut, un));
+
+    scalar* s = &stats_[statRow_[pp.index()]*nStatistics];
+    switch (outcome)
+    {
+        case fate::rebound:
+            s[reboundParcels] += 1;
+            s[reboundParticles] += nParticle;
+            s[reboundMass] += mass;
+            s[reboundSpeedSum] += nParticle*speed;
+            s[reboundAngleSum] += nParticle*angle;
+            break;
+        case fate::capture:
+            s[captureParcels] += 1;
+            s[captureParticles] += nParticle;
+            s[captureMass] += mass;
+            s[captureSpeedSum] += nParticle*speed;
+            s[captureAngleSum] += nParticle*angle;
+            if (writeFields_)
+            {
+                const label facei = pp.whichFace(p.face());
+                massStickPtr_->boundaryFieldRef()[pp.index()][facei] += mass;
+                nStickPtr_->boundaryFieldRef()[pp.index()][facei] += nParticle;
+            }
+            break;
+        case fate::escape:
+            s[escapeParcels] += 1;
+            s[escapeParticles] += nParticle;
+            s[escapeMass] += mass;
+            break;
+    }
+
+    if (maxImpactRecords_ > 0 && !recordsClosed_)
+    {
+        const Time& time = this->owner().mesh().time();
+        const vector position = p.position();
+        const scalar record[recordSize] =
+        {
+            time.value() - (1 - p.stepFraction())*time.deltaTValue(),
+            scalar(pp.index()),
+            scalar(pp.whichFace(p.face())),
+            position.x(), position.y(), position.z(),
+            p.d(), nParticle, un, ut, scalar(label(outcome)),
+            R, WA, unOut, utOut
+        };
+        for (const scalar value : record)
+        {
+            recordBuffer_.append(value);
+        }
+    }
+}
+
+
+template<class CloudType>
+Foam::scalarField
+Foam::AdhesiveWallInteraction<CloudType>::totalStatistics()
+{
+    scalarField total(stats_);
+    reduce(total, sumOp<scalarField>());
+
+    const polyBoundaryMesh& bMesh = this->owner().mesh().boundaryMesh();
+    forAll(statPatches_, row)
+    {
+        scalarList stored(nStatistics, Zero);
+        this->getModelProperty(bMesh[statPatches_[row]].name(), stored);
+        if (stored.size() == nStatistics)
+        {
+            for (label i = 0; i < nStatistics; ++i)
+            {
+                total[row*nStatistics + i] += stored[i];
+            }
+        }
+    }
+    return total;
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::writeImpactRecords()
+{
+    using namespace adhesiveWallInteractionDetail;
+
+    if (maxImpactRecords_ <= 0)
+    {
+        return;
+    }
+
+    List<scalarList> buffers(Pstream::nProcs());
+    buffers[Pstream::myProcNo()].transfer(recordBuffer_);
+    Pstream::gatherList(buffers);
+    recordBuffer_.clear();
+
+    if (Pstream::master() && !recordsClosed_)
+    {
+        OFstream& os = *recordFilePtr_;
+        const polyBoundaryMesh& bMesh = this->owner().mesh().boundaryMesh();
+        for (const scalarList& buffer : buffers)
+        {
+            for (label start = 0; start < buffer.size(); start += recordSize)
+            {
+                if (nImpactRecords_ >= maxImpactRecords_)
+                {
+                    os  << "# capped at maxImpactRecords = "
+                        << maxImpactRecords_
+                        << ": later impacts are not recorded" << endl;
+                    recordsClosed_ = true;
+                    break;
+                }
+                const scalar* r = &buffer[start];
+                os  << r[rTime] << ','
+                    << bMesh[label(r[rPatch])].name() << ','
+                    << label(r[rFace]) << ','
+                    << r[rX] << ',' << r[rY] << ',' << r[rZ] << ','
+                    << r[rDiameter] << ',' << r[rNParticle] << ','
+                    << r[rUn] << ',' << r[rUt] << ','
+                    << fateNames[label(r[rFate])] << ','
+                    << r[rR] << ',' << r[rWA] << ','
+                    << r[rUnOut] << ',' << r[rUtOut] << nl;
+                ++nImpactRecords_;
+            }
+            if (recordsClosed_) break;
+        }
+        os.flush();
+    }
+    Pstream::scatter(recordsClosed_);
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::massBalance
+(
+    Ostream& os,
+    const scalarField& total
+) const
+{
+    scalar injected = 0;
+    for (const auto& injector : this->owner().injectors())
+    {
+        injected += injector.massInjected();
+    }
+
+    scalar airborne = 0;
+    for (const auto& p : this->owner())
+    {
+        if (p.active())
+        {
+            airborne += p.nParticle()*p.mass();
+        }
+    }
+    reduce(airborne, sumOp<scalar>());
+
+    scalar captured = 0, escaped = 0;
+    forAll(statPatches_, row)
+    {
+        captured += total[row*nStatistics + captureMass];
+        escaped += total[row*nStatistics + escapeMass];
+    }
+
+    os  << "    adhesiveWallInteraction mass balance [kg]" << nl
+        << "      - injected                    = " << injected << nl
+        << "      - airborne                    = " << airborne << nl
+        << "      - captured                    = " << captured << nl
+        << "      - escaped                     = " << escaped << nl
+        << "      - injected - (airborne + captured + escaped) = "
+        << injected - (airborne + captured + escaped) << nl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
+(
+    const dictionary& dict,
+    CloudType& cloud
+)
+:
+    PatchInteractionModel<CloudType>(dict, cloud, typeName),
+    entries_(),
+    patchEntry_(cloud.mesh().boundaryMesh().size(), -1),
+    statPatches_(),
+    statRow_(cloud.mesh().boundaryMesh().size(), -1),
+    removeCaptured_(false),
+    writeFields_(this->coeffDict().getOrDefault("writeFields", false)),
+    stats_(),
+    massStickPtr_(nullptr),
+    nStickPtr_(nullptr),
+    maxImpactRecords_
+    (
+        this->coeffDict().getOrDefault("maxImpactRecords", label(0))
+    ),
+    nImpactRecords_(0),
+    recordsClosed_(false),
+    recordBuffer_(),
+    recordFilePtr_(nullptr),
+    statsFilePtr_(nullptr)
+{
+    const dictionary& coeffs = this->coeffDict();
+    const polyBoundaryMesh& bMesh = cloud.mesh().boundaryMesh();
+
+    const word capture(coeffs.getOrDefault<word>("capture", "stick"));
+    if (capture != "stick" && capture != "remove")
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "In dictionary " << coeffs.name() << ": keyword 'capture' = "
+            << capture << ": valid values are stick and remove"
+            << nl << exit(FatalIOError);
+    }
+    removeCaptured_ = (capture == "remove");
+
+    if (maxImpactRecords_ < 0)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "In dictionary " << coeffs.name()
+            << ": keyword 'maxImpactRecords' = " << maxImpactRecords_
+            << ": must be >= 0" << nl << exit(FatalIOError);
+    }
+
+    // The patch entries, read and checked once
+    const brachDunn::ElasticMaterial particle = particleMaterial();
+    if (!coeffs.found("patches"))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "In dictionary " << coeffs.name() << ": keyword 'patches' is"
+            << " missing: give a list of (patch name or regex) { type ...; }"
+            << nl << exit(FatalIOError);
+    }
+    PtrList<entry> patchList(coeffs.lookup("patches"));
+    entries_.setSize(patchList.size());
+    forAll(patchList, i)
+    {
+        if (!patchList[i].isDict())
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "In dictionary " << coeffs.name() << ": entry "
+                << patchList[i].keyword() << " of 'patches' must be a"
+                << " dictionary: name { type ...; }" << nl
+                << exit(FatalIOError);
+        }
+        entries_.set
+        (
+            i,
+            new wallInteractionEntry
+            (
+                patchList[i].keyword(), patchList[i].dict(), particle
+            )
+        );
+    }
+
+    // Patch matching happens here, once: the first entry matching a patch
+    // applies to it
+    forAll(entries_, i)
+    {
+        const labelList ids(bMesh.indices(entries_[i].name()));
+        if (ids.empty())
+        {
+            WarningInFunction
+                << "No patch matches the entry " << entries_[i].name()
+                << " of " << coeffs.name() << endl;
+        }
+        for (const label patchi : ids)
+        {
+            if
+            (
+                patchEntry_[patchi] < 0
+             && !polyPatch::constraintType(bMesh[patchi].type())
+            )
+            {
+                patchEntry_[patchi] = i;
+            }
+        }
+    }
+
+    wordList unmatched;
+    DynamicList<label> statPatches;
+    forAll(bMesh, patchi)
+    {
+        if (polyPatch::constraintType(bMesh[patchi].type()))
+        {
+            continue;
+        }
+        if (patchEntry_[patchi] < 0)
+        {
+            unmatched.append(bMesh[patchi].name());
+        }
+        else if
+        (
+            entries_[patchEntry_[patchi]].type()
+         != wallInteractionEntry::interaction::none
+        )
+        {
+            statRow_[patchi] = statPatches.size();
+            statPatches.append(patchi);
+        }
+    }
+    if (unmatched.size())
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "In dictionary " << coeffs.name() << ": no entry of 'patches'"
+            << " matches the patches " << unmatched
+            << "; every patch that is not a constraint patch needs one"
+            << nl << exit(FatalIOError);
+    }
+    statPatches_.transfer(statPatches);
+    stats_.setSize(statPatches_.size()*nStatistics, Zero);
+
+    for (const wallInteractionEntry& e : entries_)
+    {
+        Info<< "    " << e.describe().c_str() << nl;
+    }
+
+    if (writeFields_)
+    {
+        const fvMesh& mesh = cloud.mesh();
+        const auto field = [&](const word& name, const dimensionSet& dims)
+        {
+            return autoPtr<volScalarField>
+            (
+                new volScalarField
+                (
+                    IOobject
+                    (
+                        cloud.name() + ":" + name,
+                        mesh.time().timeName(),
+                        mesh,
+                        IOobject::READ_IF_PRESENT,
+                        IOobject::AUTO_WRITE
+                    ),
+                    mesh,
+                    dimensionedScalar(dims, Zero)
+                )
+            );
+        };
+        massStickPtr_ = field("massStick", dimMass);
+        nStickPtr_ = field("nStick", dimless);
+        Info<< "    Deposited mass and number per face written to "
+            << cloud.name() << ":massStick and " << cloud.name()
+            << ":nStick" << endl;
+    }
+
+    if (Pstream::master() && (this->writeToFile() || maxImpactRecords_ > 0))
+    {
+        mkDir(outputDir());
+    }
+    if (Pstream::master() && this->writeToFile())
+    {
+        statsFilePtr_.reset(new OFstream(outputDir()/"statistics.dat"));
+        OFstream& os = *statsFilePtr_;
+        os  << "# adhesiveWallInteraction statistics of cloud "
+            << cloud.name() << ", totals since the start of the case" << nl
+            << "# Time";
+        const wordList names
+        {
+            "reboundParcels", "reboundParticles", "reboundMass",
+            "captureParcels", "captureParticles", "captureMass",
+            "escapeParcels", "escapeParticles", "escapeMass",
+            "reboundMeanSpeed", "reboundMeanAngle",
+            "captureMeanSpeed", "captureMeanAngle"
+        };
+        for (const label patchi : statPatches_)
+        {
+            for (const word& name : names)
+            {
+                os << tab << bMesh[patchi].name() << ':' << name;
+            }
+        }
+        os << endl;
+    }
+    if (Pstream::master() && maxImpactRecords_ > 0)
+    {
+        recordFilePtr_.reset(new OFstream(outputDir()/"impacts.csv"));
+        recordFilePtr_->precision(15);
+        *recordFilePtr_
+            << "time,patch,face,x,y,z,diameter,nParticle,un,ut,outcome,"
+            << "R,WA,unOut,utOut" << endl;
+    }
+}
+
+
+template<class CloudType>
+Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
+(
+    const AdhesiveWallInteraction<CloudType>& pim
+)
+:
+    PatchInteractionModel<CloudType>(pim),
+    entries_(pim.entries_),
+    patchEntry_(pim.patchEntry_),
+    statPatches_(pim.statPatches_),
+    statRow_(pim.statRow_),
+    removeCaptured_(pim.removeCaptured_),
+    writeFields_(false),
+    stats_(pim.stats_),
+    massStickPtr_(nullptr),
+    nStickPtr_(nullptr),
+    maxImpactRecords_(0),
+    nImpactRecords_(0),
+    recordsClosed_(true),
+    recordBuffer_(),
+    recordFilePtr_(nullptr),
+    statsFilePtr_(nullptr)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+bool Foam::AdhesiveWallInteraction<CloudType>::correct
+(
+    typename CloudType::parcelType& p,
+    const polyPatch& pp,
+    bool& keepParticle
+)
+{
+    using namespace adhesiveWallInteractionDetail;
+    using interaction = wallInteractionEntry::interaction;
+
+    const label entryi = patchEntry_[pp.index()];
+    if (entryi < 0)
+    {
+        return false;
+    }
+    const wallInteractionEntry& entry = entries_[entryi];
+    if (entry.type() == interaction::none)
+    {
+        return false;
+    }
+
+    vector nw, Up;
+    this->owner().patchData(p, pp, nw, Up);
+
+    // Velocity relative to the wall; nw points out of the domain
+    vector& U = p.U();
+    const vector Urel = U - Up;
+    const scalar Un = Urel & nw;
+    const vector Ut = Urel - Un*nw;
+    const scalar ut = mag(Ut);
+
+    const auto capture = [&]()
+    {
+        keepParticle = !removeCaptured_;
+        p.active(false);
+        U = Zero;
+        if constexpr (isColliding<typename CloudType::parcelType>::value)
+        {
+            p.angularMomentum() = Zero;
+        }
+    };
+
+    switch (entry.type())
+    {
+        case interaction::escape:
+        {
+            keepParticle = false;
+            p.active(false);
+            U = Zero;
+            count(p, pp, fate::escape, Un, ut, 0, 0, 0, 0);
+            break;
+        }
+        case interaction::stick:
+        {
+            capture();
+            count(p, pp, fate::capture, Un, ut, 0, 0, 0, 0);
+            break;
+        }
+        case interaction::rebound:
+        {
+            // standardWallInteraction's rebound, e and mu as there
+            keepParticle = true;
+            p.active(true);
+            vector Uout = Urel;
+            if (Un > 0)
+            {
+                Uout -= (1 + entry.e())*Un*nw;
+            }
+            Uout -= entry.mu()*Ut;
+            U = Uout + Up;
+            count
+            (
+                p, pp, fate::rebound, Un, ut, entry.e(), 0,
+                max(-(Uout & nw), scalar(0)), (1 - entry.mu())*ut
+            );
+            break;
+        }
+        case interaction::adhesive:
+        {
+            brachDunn::Vector3 omega;
+            if constexpr (isColliding<typename CloudType::parcelType>::value)
+            {
+                omega = toCore(p.omega());
+            }
+
+            brachDunn::Impact3D out;
+            try
+            {
+                out = entry.model().impact
+                (
+                    brachDunn::Particle{p.d(), p.rho()},
+                    toCore(Urel),
+                    toCore(-nw),
+                    omega
+                );
+            }
+            catch (const brachDunn::InputError& err)
+            {
+                FatalErrorInFunction
+                    << "Parcel at " << p.position() << " on patch "
+                    << pp.name() << ": " << err.what() << nl
+                    << exit(FatalError);
+            }
+
+            const brachDunn::ImpactResult& r = out.result;
+            if (r.outcome == brachDunn::Outcome::notApproaching)
+            {
+                keepParticle = true;
+                break;
+            }
+            if (r.captured())
+            {
+                capture();
+                count(p, pp, fate::capture, r.un, r.ut, r.R, r.WA, 0, 0);
+                break;
+            }
+
+            keepParticle = true;
+            p.active(true);
+            U = fromCore(out.U) + Up;
+            if constexpr (isColliding<typename CloudType::parcelType>::value)
+            {
+                p.angularMomentum() =
+                    p.momentOfInertia()*fromCore(out.omega);
+            }
+            count
+            (
+                p, pp, fate::rebound, r.un, r.ut, r.R, r.WA, r.unOut, r.utOut
+            );
+            break;
+        }
+        case interaction::none:
+            break;
+    }
+
+    return true;
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::info(Ostream& os)
+{
+    PatchInteractionModel<CloudType>::info(os);
+
+    const scalarField total(totalStatistics());
+    const polyBoundaryMesh& bMesh = this->owner().mesh().boundaryMesh();
+
+    const auto mean = [](scalar sum, scalar n)
+    {
+        return n > 0 ? sum/n : scalar(0);
+    };
+
+    forAll(statPatches_, row)
+    {
+        const scalar* s = &total[row*nStatistics];
+        os  << "    adhesiveWallInteraction patch "
+            << bMesh[statPatches_[row]].name()
+            << " (parcels, particles, mass)" << nl
+            << "      - impacts                     = "
+            << s[reboundParcels] + s[captureParcels] + s[escapeParcels] << ", "
+            << s[reboundParticles] + s[captureParticles] + s[escapeParticles]
+            << ", " << s[reboundMass] + s[captureMass] + s[escapeMass] << nl
+            << "      - rebounds                    = "
+            << s[reboundParcels] << ", " << s[reboundParticles] << ", "
+            << s[reboundMass] << nl
+            << "      - captures                    = "
+            << s[captureParcels] << ", " << s[captureParticles] << ", "
+            << s[captureMass] << nl
+            << "      - escapes                     = "
+            << s[escapeParcels] << ", " << s[escapeParticles] << ", "
+            << s[escapeMass] << nl
+            << "      - captured: mean impact speed, angle = "
+            << mean(s[captureSpeedSum], s[captureParticles]) << " m/s, "
+            << mean(s[captureAngleSum], s[captureParticles]) << " deg" << nl
+            << "      - rebounded: mean impact speed, angle = "
+            << mean(s[reboundSpeedSum], s[reboundParticles]) << " m/s, "
+            << mean(s[reboundAngleSum], s[reboundParticles]) << " deg" << nl;
+    }
+
+    if (statsFilePtr_.valid())
+    {
+        OFstream& file = *statsFilePtr_;
+        file << this->owner().mesh().time().value();
+        forAll(statPatches_, row)
+        {
+            const scalar* s = &total[row*nStatistics];
+            for (label i = 0; i < reboundSpeedSum; ++i)
+            {
+                file << tab << s[i];
+            }
+            file
+                << tab << mean(s[reboundSpeedSum], s[reboundParticles])
+                << tab << mean(s[reboundAngleSum], s[reboundParticles])
+                << tab << mean(s[captureSpeedSum], s[captureParticles])
+                << tab << mean(s[captureAngleSum], s[captureParticles]);
+        }
+        file << endl;
+    }
+
+    writeImpactRecords();
+
+    if (this->writeTime())
+    {
+        massBalance(os, total);
+
+        forAll(statPatches_, row)
+        {
+            this->setModelProperty
+            (
+                bMesh[statPatches_[row]].name(),
+                scalarList(SubList<scalar>(total, nStatistics, row*nStatistics))
+            );
+        }
+        stats_ = Zero;
+    }
+}

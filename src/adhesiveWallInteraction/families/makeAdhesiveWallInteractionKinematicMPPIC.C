@@ -1,0 +1,5 @@
+// adhesiveWallInteraction for the clouds of type basicKinematicMPPICCloud
+#include "basicKinematicMPPICCloud.H"
+#include "AdhesiveWallInteraction.H"
+
+makePatchInteractionModelType(AdhesiveWallInteraction, basicKinematicMPPICCloud);

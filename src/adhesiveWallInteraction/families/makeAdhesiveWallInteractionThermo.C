@@ -1,0 +1,5 @@
+// adhesiveWallInteraction for the clouds of type basicThermoCloud
+#include "basicThermoCloud.H"
+#include "AdhesiveWallInteraction.H"
+
+makePatchInteractionModelType(AdhesiveWallInteraction, basicThermoCloud);

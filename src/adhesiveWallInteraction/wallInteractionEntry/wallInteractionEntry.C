@@ -1,0 +1,191 @@
+#include "wallInteractionEntry.H"
+#include "Tuple2.H"
+#include "IOstreams.H"
+
+#include <sstream>
+
+// * * * * * * * * * * * * * * * Local Classes * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- A law's keywords read from its OpenFOAM sub-dictionary
+class dictionaryParameters
+:
+    public brachDunn::Parameters
+{
+    const dictionary& dict_;
+
+public:
+
+    explicit dictionaryParameters(const dictionary& dict) : dict_(dict) {}
+
+    std::optional<double> find(const std::string& keyword) const override
+    {
+        if (!dict_.found(keyword, keyType::LITERAL)) return std::nullopt;
+        return dict_.get<scalar>(keyword, keyType::LITERAL);
+    }
+
+    std::optional<brachDunn::Table> findTable
+    (
+        const std::string& keyword
+    ) const override
+    {
+        if (!dict_.found(keyword, keyType::LITERAL)) return std::nullopt;
+        const List<Tuple2<scalar, scalar>> pairs
+        (
+            dict_.get<List<Tuple2<scalar, scalar>>>(keyword, keyType::LITERAL)
+        );
+        brachDunn::Table table;
+        for (const auto& pair : pairs)
+        {
+            table.push_back({pair.first(), pair.second()});
+        }
+        return table;
+    }
+};
+
+
+//- The sub-dictionary of a law, naming the entry when it is missing
+const dictionary& lawDict(const dictionary& dict, const word& keyword)
+{
+    if (!dict.isDict(keyword))
+    {
+        FatalIOErrorInFunction(dict)
+            << "In dictionary " << dict.name() << ": keyword '" << keyword
+            << "' is missing or not a dictionary; an adhesive patch needs "
+            << keyword << " { type ...; ... }" << nl << exit(FatalIOError);
+    }
+    return dict.subDict(keyword);
+}
+
+
+//- Build a law by its type name from its sub-dictionary
+template<class Law>
+Law readLaw(const dictionary& dict, const word& keyword)
+{
+    const dictionary& sub = lawDict(dict, keyword);
+    const word type(sub.get<word>("type"));
+    return checkedCoreCall
+    (
+        sub,
+        [&]{ return Law::select(type, dictionaryParameters(sub)); }
+    );
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+const Foam::wordList Foam::wallInteractionEntry::interactionNames
+{
+    "adhesive", "rebound", "stick", "escape", "none"
+};
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+brachDunn::ElasticMaterial Foam::readElasticMaterial(const dictionary& dict)
+{
+    const brachDunn::ElasticMaterial material
+    {
+        dict.get<scalar>("E"),
+        dict.get<scalar>("nu")
+    };
+    checkedCoreCall(dict, [&]{ material.check(); });
+    return material;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::wallInteractionEntry::wallInteractionEntry
+(
+    const keyType& name,
+    const dictionary& dict,
+    const brachDunn::ElasticMaterial& particleMaterial
+)
+:
+    name_(name),
+    type_(interaction::none),
+    e_(1),
+    mu_(0)
+{
+    const word typeName(dict.get<word>("type"));
+    const label typeIndex = interactionNames.find(typeName);
+    if (typeIndex < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "In dictionary " << dict.name() << ": keyword 'type' = "
+            << typeName << ": unknown patch interaction; valid types: "
+            << interactionNames << nl << exit(FatalIOError);
+    }
+    type_ = static_cast<interaction>(typeIndex);
+
+    if (type_ == interaction::rebound)
+    {
+        // As standardWallInteraction: e in [0, 1], mu a loss fraction in [0, 1]
+        e_ = dict.getOrDefault<scalar>("e", 1);
+        mu_ = dict.getOrDefault<scalar>("mu", 0);
+        checkedCoreCall(dict, [&]
+        {
+            brachDunn::requireInRange("e", e_, 0, 1);
+            brachDunn::requireInRange("mu", mu_, 0, 1);
+        });
+    }
+    else if (type_ == interaction::adhesive)
+    {
+        const brachDunn::ElasticMaterial wall = readElasticMaterial(dict);
+        const auto restitution =
+            readLaw<brachDunn::RestitutionLaw>(dict, "restitution");
+        const auto adhesion = readLaw<brachDunn::AdhesionLaw>(dict, "adhesion");
+        const auto friction =
+            dict.isDict("friction")
+          ? readLaw<brachDunn::FrictionLaw>(dict, "friction")
+          : brachDunn::FrictionLaw::sticking();
+        const scalar momentCoeff = dict.getOrDefault<scalar>("momentCoeff", -1);
+        const scalar minReboundSpeed = dict.getOrDefault<scalar>
+        (
+            "minReboundSpeed", brachDunn::ImpactModel::defaultMinReboundSpeed
+        );
+        model_.emplace
+        (
+            checkedCoreCall(dict, [&]
+            {
+                return brachDunn::ImpactModel
+                (
+                    particleMaterial, wall, restitution, adhesion, friction,
+                    momentCoeff, minReboundSpeed
+                );
+            })
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::string Foam::wallInteractionEntry::describe() const
+{
+    std::ostringstream os;
+    os << name_.c_str() << ": " << typeName().c_str();
+    if (type_ == interaction::rebound)
+    {
+        os << " (e " << e_ << ", mu " << mu_ << ")";
+    }
+    else if (type_ == interaction::adhesive)
+    {
+        const brachDunn::ImpactModel& m = *model_;
+        os  << " (wall E " << m.wallMaterial().E
+            << " nu " << m.wallMaterial().nu
+            << "; restitution { " << m.restitution().describe()
+            << " } adhesion { " << m.adhesion().describe()
+            << " } friction { " << m.friction().describe()
+            << " } momentCoeff " << m.momentCoeff()
+            << " minReboundSpeed " << m.minReboundSpeed() << ")";
+    }
+    return os.str();
+}
