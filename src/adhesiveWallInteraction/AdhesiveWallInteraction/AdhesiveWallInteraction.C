@@ -350,13 +350,14 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
                 << " dictionary: name { type ...; }" << nl
                 << exit(FatalIOError);
         }
+        // Named after its place in the cloud properties, for error messages
+        dictionary entryDict(coeffs, patchList[i].dict());
+        entryDict.name() =
+            coeffs.name() + ".patches." + patchList[i].keyword();
         entries_.set
         (
             i,
-            new wallInteractionEntry
-            (
-                patchList[i].keyword(), patchList[i].dict(), particle
-            )
+            new wallInteractionEntry(patchList[i].keyword(), entryDict, particle)
         );
     }
 

@@ -48,8 +48,9 @@ public:
 };
 
 
-//- The sub-dictionary of a law, naming the entry when it is missing
-const dictionary& lawDict(const dictionary& dict, const word& keyword)
+//- The sub-dictionary of a law, named by its full scope for messages;
+//  a missing one is an error naming the entry
+dictionary lawDict(const dictionary& dict, const word& keyword)
 {
     if (!dict.isDict(keyword))
     {
@@ -58,7 +59,9 @@ const dictionary& lawDict(const dictionary& dict, const word& keyword)
             << "' is missing or not a dictionary; an adhesive patch needs "
             << keyword << " { type ...; ... }" << nl << exit(FatalIOError);
     }
-    return dict.subDict(keyword);
+    dictionary sub(dict.subDict(keyword));
+    sub.name() = dict.name() + "." + keyword;
+    return sub;
 }
 
 
@@ -66,7 +69,7 @@ const dictionary& lawDict(const dictionary& dict, const word& keyword)
 template<class Law>
 Law readLaw(const dictionary& dict, const word& keyword)
 {
-    const dictionary& sub = lawDict(dict, keyword);
+    const dictionary sub(lawDict(dict, keyword));
     const word type(sub.get<word>("type"));
     return checkedCoreCall
     (
@@ -120,8 +123,12 @@ Foam::wallInteractionEntry::wallInteractionEntry
     {
         FatalIOErrorInFunction(dict)
             << "In dictionary " << dict.name() << ": keyword 'type' = "
-            << typeName << ": unknown patch interaction; valid types: "
-            << interactionNames << nl << exit(FatalIOError);
+            << typeName << ": unknown patch interaction; valid types:";
+        for (const word& name : interactionNames)
+        {
+            FatalIOError << ' ' << name;
+        }
+        FatalIOError << nl << exit(FatalIOError);
     }
     type_ = static_cast<interaction>(typeIndex);
 
