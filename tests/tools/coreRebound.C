@@ -6,7 +6,9 @@
 // Restitution and adhesion: 'k,p' and 'c,n' give the power laws of Eqs. 15
 // and 24; a single number R or gamma gives the constant laws; friction is
 // sticking. n is the wall normal into the fluid, W the wall velocity.
-// Prints "Ux Uy Uz captured" with 17 significant digits.
+// Prints "Ux Uy Uz captured wx wy wz" (velocity, 0 or 1, angular velocity
+// after impact, the particle not spinning before) with 17 significant
+// digits.
 
 #include "ImpactModel.H"
 
@@ -70,8 +72,9 @@ int main(int argc, char* argv[])
             out.result.captured() ? Vector3{} : out.U + wall;
         std::printf
         (
-            "%.17g %.17g %.17g %d\n",
-            Uout.x, Uout.y, Uout.z, out.result.captured() ? 1 : 0
+            "%.17g %.17g %.17g %d %.17g %.17g %.17g\n",
+            Uout.x, Uout.y, Uout.z, out.result.captured() ? 1 : 0,
+            out.omega.x, out.omega.y, out.omega.z
         );
     }
     catch (const InputError& err)
