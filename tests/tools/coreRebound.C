@@ -6,9 +6,10 @@
 // Restitution and adhesion: 'k,p' and 'c,n' give the power laws of Eqs. 15
 // and 24; a single number R or gamma gives the constant laws; friction is
 // sticking. n is the wall normal into the fluid, W the wall velocity.
-// Prints "Ux Uy Uz captured wx wy wz" (velocity, 0 or 1, angular velocity
-// after impact, the particle not spinning before) with 17 significant
-// digits.
+// Prints "Ux Uy Uz captured wx wy wz R gamma WA energyLoss" (velocity, 0
+// or 1, angular velocity after impact, the particle not spinning before,
+// then the impact's R, gamma, W_A and kinetic energy lost) with 17
+// significant digits.
 
 #include "ImpactModel.H"
 
@@ -72,9 +73,11 @@ int main(int argc, char* argv[])
             out.result.captured() ? Vector3{} : out.U + wall;
         std::printf
         (
-            "%.17g %.17g %.17g %d %.17g %.17g %.17g\n",
+            "%.17g %.17g %.17g %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n",
             Uout.x, Uout.y, Uout.z, out.result.captured() ? 1 : 0,
-            out.omega.x, out.omega.y, out.omega.z
+            out.omega.x, out.omega.y, out.omega.z,
+            out.result.R, out.result.gamma, out.result.WA,
+            out.result.energyLoss
         );
     }
     catch (const InputError& err)

@@ -60,13 +60,12 @@ namespace
 {
 
 //- A list option such as "(1e-6 2e-6)", each value checked
+//  (angles: in [0, 90) degrees; anything else: > 0)
 scalarList listOption
 (
     const argList& args,
     const word& name,
-    const scalarList& deflt,
-    scalar lower,
-    scalar upper
+    const scalarList& deflt
 )
 {
     if (!args.found(name))
@@ -104,13 +103,15 @@ scalarList listOption
             << "Option -" << name << " is an empty list" << nl
             << exit(FatalError);
     }
+    const bool angles = (name == "angles");
     for (const scalar v : values)
     {
-        if (!(v >= lower && v < upper))
+        if (angles ? !(v >= 0 && v < 90) : !(v > 0 && v < GREAT))
         {
             FatalErrorInFunction
-                << "Option -" << name << ": value " << v << " is outside ["
-                << lower << ", " << upper << ")" << nl << exit(FatalError);
+                << "Option -" << name << ": value " << v
+                << (angles ? " must be in [0, 90) degrees" : " must be > 0")
+                << nl << exit(FatalError);
         }
     }
     return values;
@@ -291,9 +292,9 @@ int main(int argc, char *argv[])
     const scalar rho = tools::particleDensity(args, cloudProperties);
 
     const scalarList diameters =
-        listOption(args, "diameters", scalarList(), VSMALL, GREAT);
+        listOption(args, "diameters", scalarList());
     const scalarList angles =
-        listOption(args, "angles", scalarList(1, Zero), 0, 90);
+        listOption(args, "angles", scalarList(1, Zero));
     const bool critical = args.found("critical");
 
     std::unique_ptr<std::ofstream> file;
@@ -366,7 +367,7 @@ int main(int argc, char *argv[])
     else
     {
         const scalarList speeds =
-            listOption(args, "speeds", scalarList(), VSMALL, GREAT);
+            listOption(args, "speeds", scalarList());
 
         if (args.found("diagnostics"))
         {
