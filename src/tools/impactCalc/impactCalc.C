@@ -34,6 +34,7 @@ Usage
                           giving W_A from Eq. 18 as the paper's Table 1 does
       -lifshitz, -separation, -humidity, -charge, -potential: force review inputs
       -output FILE        write the CSV there
+      -precision N        significant digits of the CSV (default 10)
       -plot FILE.png      plot it with gnuplot
 
 \*---------------------------------------------------------------------------*/
@@ -260,6 +261,7 @@ int main(int argc, char *argv[])
     argList::addOption("charge", "value", "particle charge [C]");
     argList::addOption("potential", "value", "contact potential [V]");
     argList::addOption("output", "file", "write the CSV to this file");
+    argList::addOption("precision", "digits", "significant digits (10)");
     argList::addOption("plot", "file.png", "plot with gnuplot");
 
     #include "setRootCase.H"
@@ -308,7 +310,13 @@ int main(int argc, char *argv[])
         }
     }
     std::ostream& os = file ? *file : std::cout;
-    os << std::setprecision(10);
+    const label precision = args.getOrDefault<label>("precision", 10);
+    if (precision < 1 || precision > 17)
+    {
+        FatalErrorInFunction << "Option -precision " << precision
+            << ": must be in [1, 17]" << nl << exit(FatalError);
+    }
+    os << std::setprecision(precision);
     std::vector<Series> series;
 
     if (critical)
