@@ -138,6 +138,36 @@ void requireDetermined
 }
 
 
+//- Fill a LawFit from fitted parameters. A power law's first coefficient
+//  (k or c) was fitted through its logarithm, to stay positive: report it
+//  with its delta-method standard error
+void report
+(
+    LawFit& fit,
+    const std::string& type,
+    const std::vector<std::string>& powerLawNames,
+    const std::vector<std::string>& constantNames,
+    const VectorXd& theta,
+    const VectorXd& standardErrors
+)
+{
+    fit.type = type;
+    if (type == "powerLaw")
+    {
+        const double scale = std::exp(theta(0));
+        fit.names = powerLawNames;
+        fit.values = {scale, theta(1)};
+        fit.standardErrors = {scale*standardErrors(0), standardErrors(1)};
+    }
+    else
+    {
+        fit.names = constantNames;
+        fit.values = {theta(0)};
+        fit.standardErrors = {standardErrors(0)};
+    }
+}
+
+
 void requirePoints
 (
     int points,
@@ -479,40 +509,10 @@ ImpactFitResult fitImpacts
         result.adhesion.correlation = pearson(gamma, gammaFitted);
     }
 
-    // Report k and c, fitted through their logarithms (positive), with the
-    // delta-method standard errors
-    LawFit& r = result.restitution;
-    r.type = s.restitutionType;
-    if (r.type == "powerLaw")
-    {
-        const double k = std::exp(restitutionTheta(0));
-        r.names = {"k", "p"};
-        r.values = {k, restitutionTheta(1)};
-        r.standardErrors =
-            {k*restitutionFit.standardErrors(0), restitutionFit.standardErrors(1)};
-    }
-    else
-    {
-        r.names = {"R"};
-        r.values = {restitutionTheta(0)};
-        r.standardErrors = {restitutionFit.standardErrors(0)};
-    }
-    LawFit& a = result.adhesion;
-    a.type = s.adhesionType;
-    if (a.type == "powerLaw")
-    {
-        const double c = std::exp(adhesionTheta(0));
-        a.names = {"c", "n"};
-        a.values = {c, adhesionTheta(1)};
-        a.standardErrors =
-            {c*adhesionFit.standardErrors(0), adhesionFit.standardErrors(1)};
-    }
-    else
-    {
-        a.names = {"gamma"};
-        a.values = {adhesionTheta(0)};
-        a.standardErrors = {adhesionFit.standardErrors(0)};
-    }
+    report(result.restitution, s.restitutionType, {"k", "p"}, {"R"},
+           restitutionTheta, restitutionFit.standardErrors);
+    report(result.adhesion, s.adhesionType, {"c", "n"}, {"gamma"},
+           adhesionTheta, adhesionFit.standardErrors);
     return result;
 }
 

@@ -113,34 +113,31 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
     const scalar speed = Foam::sqrt(un*un + ut*ut);
     const scalar angle = radToDeg(Foam::atan2(ut, un));
 
+    // Columns are fate-major: (parcels, particles, mass) of rebound, capture,
+    // escape, then (speed, angle) sums of rebound and capture
+    static_assert
+    (
+        captureParcels == 3 && escapeParcels == 6
+     && captureSpeedSum == reboundSpeedSum + 2,
+        "statistic columns out of the fate order"
+    );
     scalar* s = &stats_[statRow_[pp.index()]*nStatistics];
-    switch (outcome)
+    const label column = 3*label(outcome);
+    s[column] += 1;
+    s[column + 1] += nParticle;
+    s[column + 2] += mass;
+    if (outcome != fate::escape)
     {
-        case fate::rebound:
-            s[reboundParcels] += 1;
-            s[reboundParticles] += nParticle;
-            s[reboundMass] += mass;
-            s[reboundSpeedSum] += nParticle*speed;
-            s[reboundAngleSum] += nParticle*angle;
-            break;
-        case fate::capture:
-            s[captureParcels] += 1;
-            s[captureParticles] += nParticle;
-            s[captureMass] += mass;
-            s[captureSpeedSum] += nParticle*speed;
-            s[captureAngleSum] += nParticle*angle;
-            if (writeFields_)
-            {
-                const label facei = pp.whichFace(p.face());
-                massStickPtr_->boundaryFieldRef()[pp.index()][facei] += mass;
-                nStickPtr_->boundaryFieldRef()[pp.index()][facei] += nParticle;
-            }
-            break;
-        case fate::escape:
-            s[escapeParcels] += 1;
-            s[escapeParticles] += nParticle;
-            s[escapeMass] += mass;
-            break;
+        const label sums = reboundSpeedSum + 2*label(outcome);
+        s[sums] += nParticle*speed;
+        s[sums + 1] += nParticle*angle;
+    }
+
+    if (outcome == fate::capture && writeFields_)
+    {
+        const label facei = pp.whichFace(p.face());
+        massStickPtr_->boundaryFieldRef()[pp.index()][facei] += mass;
+        nStickPtr_->boundaryFieldRef()[pp.index()][facei] += nParticle;
     }
 
     if (maxImpactRecords_ > 0 && !recordsClosed_)
