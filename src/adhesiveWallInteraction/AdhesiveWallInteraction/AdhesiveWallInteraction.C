@@ -121,7 +121,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
      && captureSpeedSum == reboundSpeedSum + 2,
         "statistic columns out of the fate order"
     );
-    scalar* s = &stats_[statRow_[pp.index()]*nStatistics];
+    scalar* s = &stats_[row(p, pp)*nStatistics];
     const label column = 3*label(outcome);
     s[column] += 1;
     s[column + 1] += nParticle;
@@ -133,11 +133,18 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
         s[sums + 1] += nParticle*angle;
     }
 
-    if (outcome == fate::capture && writeFields_)
+    if (writeFields_ && outcome != fate::rebound)
     {
         const label facei = pp.whichFace(p.face());
-        massStickPtr_->boundaryFieldRef()[pp.index()][facei] += mass;
-        nStickPtr_->boundaryFieldRef()[pp.index()][facei] += nParticle;
+        if (outcome == fate::capture)
+        {
+            massStickPtr_->boundaryFieldRef()[pp.index()][facei] += mass;
+            nStickPtr_->boundaryFieldRef()[pp.index()][facei] += nParticle;
+        }
+        else
+        {
+            massEscapePtr_->boundaryFieldRef()[pp.index()][facei] += mass;
+        }
     }
 
     if (maxImpactRecords_ > 0 && !recordsClosed_)
@@ -162,22 +169,40 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
 
 
 template<class CloudType>
+Foam::string Foam::AdhesiveWallInteraction<CloudType>::rowName
+(
+    const label row
+) const
+{
+    const polyBoundaryMesh& bMesh = this->owner().mesh().boundaryMesh();
+    string name(bMesh[statPatches_[row/nInjectors_]].name());
+    if (injectorIds_.size())
+    {
+        name += " injector " + Foam::name(injectorIds_[row % nInjectors_]);
+    }
+    return name;
+}
+
+
+template<class CloudType>
 Foam::scalarField
 Foam::AdhesiveWallInteraction<CloudType>::totalStatistics()
 {
     scalarField total(stats_);
     reduce(total, sumOp<scalarField>());
 
+    // Earlier runs: one list of nInjectors rows per patch
     const polyBoundaryMesh& bMesh = this->owner().mesh().boundaryMesh();
-    forAll(statPatches_, row)
+    const label patchSize = nInjectors_*nStatistics;
+    forAll(statPatches_, patchRow)
     {
-        scalarList stored(nStatistics, Zero);
-        this->getModelProperty(bMesh[statPatches_[row]].name(), stored);
-        if (stored.size() == nStatistics)
+        scalarList stored(patchSize, Zero);
+        this->getModelProperty(bMesh[statPatches_[patchRow]].name(), stored);
+        if (stored.size() == patchSize)
         {
-            for (label i = 0; i < nStatistics; ++i)
+            for (label i = 0; i < patchSize; ++i)
             {
-                total[row*nStatistics + i] += stored[i];
+                total[patchRow*patchSize + i] += stored[i];
             }
         }
     }
@@ -260,10 +285,10 @@ void Foam::AdhesiveWallInteraction<CloudType>::massBalance
     reduce(airborne, sumOp<scalar>());
 
     scalar captured = 0, escaped = 0;
-    forAll(statPatches_, row)
+    for (label start = 0; start < total.size(); start += nStatistics)
     {
-        captured += total[row*nStatistics + captureMass];
-        escaped += total[row*nStatistics + escapeMass];
+        captured += total[start + captureMass];
+        escaped += total[start + escapeMass];
     }
 
     os  << "    adhesiveWallInteraction mass balance [kg]" << nl
@@ -292,9 +317,13 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     statRow_(cloud.mesh().boundaryMesh().size(), -1),
     removeCaptured_(false),
     writeFields_(this->coeffDict().getOrDefault("writeFields", false)),
+    injectorIndex_(),
+    injectorIds_(),
+    nInjectors_(1),
     stats_(),
     massStickPtr_(nullptr),
     nStickPtr_(nullptr),
+    massEscapePtr_(nullptr),
     maxImpactRecords_
     (
         this->coeffDict().getOrDefault("maxImpactRecords", label(0))
@@ -413,7 +442,17 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
             << nl << exit(FatalIOError);
     }
     statPatches_.transfer(statPatches);
-    stats_.setSize(statPatches_.size()*nStatistics, Zero);
+    // By injector, as standardWallInteraction's outputByInjectorId
+    if (coeffs.getOrDefault("outputByInjectorId", false))
+    {
+        for (const auto& injector : cloud.injectors())
+        {
+            injectorIndex_.insert(injector.injectorID(), injectorIds_.size());
+            injectorIds_.append(injector.injectorID());
+        }
+        nInjectors_ = max(injectorIds_.size(), label(1));
+    }
+    stats_.setSize(statPatches_.size()*nInjectors_*nStatistics, Zero);
 
     for (const wallInteractionEntry& e : entries_)
     {
@@ -444,9 +483,11 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         };
         massStickPtr_ = field("massStick", dimMass);
         nStickPtr_ = field("nStick", dimless);
+        massEscapePtr_ = field("massEscape", dimMass);
         Info<< "    Deposited mass and number per face written to "
             << cloud.name() << ":massStick and " << cloud.name()
-            << ":nStick" << endl;
+            << ":nStick, escaped mass to " << cloud.name() << ":massEscape"
+            << endl;
     }
 
     if (Pstream::master() && (this->writeToFile() || maxImpactRecords_ > 0))
@@ -468,11 +509,11 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
             "reboundMeanSpeed", "reboundMeanAngle",
             "captureMeanSpeed", "captureMeanAngle"
         };
-        for (const label patchi : statPatches_)
+        for (label row = 0; row < statPatches_.size()*nInjectors_; ++row)
         {
             for (const word& name : names)
             {
-                os << tab << bMesh[patchi].name() << ':' << name;
+                os << tab << rowName(row).c_str() << ':' << name;
             }
         }
         os << endl;
@@ -501,9 +542,13 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     statRow_(pim.statRow_),
     removeCaptured_(pim.removeCaptured_),
     writeFields_(false),
+    injectorIndex_(pim.injectorIndex_),
+    injectorIds_(pim.injectorIds_),
+    nInjectors_(pim.nInjectors_),
     stats_(pim.stats_),
     massStickPtr_(nullptr),
     nStickPtr_(nullptr),
+    massEscapePtr_(nullptr),
     maxImpactRecords_(0),
     nImpactRecords_(0),
     recordsClosed_(true),
@@ -668,11 +713,11 @@ void Foam::AdhesiveWallInteraction<CloudType>::info(Ostream& os)
         return n > 0 ? sum/n : scalar(0);
     };
 
-    forAll(statPatches_, row)
+    const label nRows = total.size()/nStatistics;
+    for (label row = 0; row < nRows; ++row)
     {
         const scalar* s = &total[row*nStatistics];
-        os  << "    adhesiveWallInteraction patch "
-            << bMesh[statPatches_[row]].name()
+        os  << "    adhesiveWallInteraction patch " << rowName(row).c_str()
             << " (parcels, particles, mass)" << nl
             << "      - impacts                     = "
             << s[reboundParcels] + s[captureParcels] + s[escapeParcels] << ", "
@@ -699,7 +744,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::info(Ostream& os)
     {
         OFstream& file = *statsFilePtr_;
         file << this->owner().mesh().time().value();
-        forAll(statPatches_, row)
+        for (label row = 0; row < nRows; ++row)
         {
             const scalar* s = &total[row*nStatistics];
             for (label i = 0; i < reboundSpeedSum; ++i)
@@ -721,12 +766,13 @@ void Foam::AdhesiveWallInteraction<CloudType>::info(Ostream& os)
     {
         massBalance(os, total);
 
-        forAll(statPatches_, row)
+        const label patchSize = nInjectors_*nStatistics;
+        forAll(statPatches_, patchRow)
         {
             this->setModelProperty
             (
-                bMesh[statPatches_[row]].name(),
-                scalarList(SubList<scalar>(total, nStatistics, row*nStatistics))
+                bMesh[statPatches_[patchRow]].name(),
+                scalarList(SubList<scalar>(total, patchSize, patchRow*patchSize))
             );
         }
         stats_ = Zero;
