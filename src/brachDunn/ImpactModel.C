@@ -99,8 +99,9 @@ ImpactResult ImpactModel::impact
         res.spinOut = 0;
         res.normalImpulse = m*un;
         res.tangentialImpulse = m*ut;
-        res.impulseRatio =
-            std::min(ut/un, std::numeric_limits<double>::max());
+        // ut/un, without overflowing for a grazing capture
+        constexpr double largest = std::numeric_limits<double>::max();
+        res.impulseRatio = (un >= 1 || ut <= un*largest) ? ut/un : largest;
         res.adhesionLoss = elasticKE;
         res.frictionLoss = 0.5*m*ut*ut;
         res.energyLoss = normalKE + res.frictionLoss;
@@ -111,7 +112,10 @@ ImpactResult ImpactModel::impact
     res.normalImpulse = m*(un + res.unOut);
 
     // Sliding stops (sticking) unless the Coulomb limit is reached first
-    const double slidingImpulse = friction_.coefficient()*res.normalImpulse;
+    const double slidingImpulse =
+        friction_.kind() == FrictionLaw::Kind::coulomb
+      ? friction_.coefficient()*res.normalImpulse
+      : m*ut;
     if (slidingImpulse < m*ut)
     {
         res.tangentialImpulse = slidingImpulse;

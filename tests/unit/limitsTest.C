@@ -199,6 +199,7 @@ TEST(Limits, ReboundFloorEndsRepeatedRebounds)
 
 TEST(Limits, ExtremeSpeedsStayFinite)
 {
+    const TrapFloatingPointErrors trap;
     for (const AdhesionLaw& adhesion
          : {AdhesionLaw::none(), AdhesionLaw::powerLaw(0.34, 0.5)})
     {

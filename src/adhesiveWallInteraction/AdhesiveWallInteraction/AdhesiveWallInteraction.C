@@ -25,6 +25,18 @@ struct isColliding
 >
 : std::true_type {};
 
+//- Parcels of MPPIC clouds carry a velocity correction
+template<class Parcel, class = void>
+struct isMPPIC : std::false_type {};
+
+template<class Parcel>
+struct isMPPIC
+<
+    Parcel,
+    std::void_t<decltype(std::declval<Parcel&>().UCorrect())>
+>
+: std::true_type {};
+
 inline brachDunn::Vector3 toCore(const vector& v)
 {
     return {v.x(), v.y(), v.z()};
@@ -346,6 +358,23 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
             << nl << exit(FatalIOError);
     }
     removeCaptured_ = (capture == "remove");
+    if constexpr
+    (
+        adhesiveWallInteractionDetail::isMPPIC
+        <
+            typename CloudType::parcelType
+        >::value
+    )
+    {
+        if (!removeCaptured_)
+        {
+            WarningInFunction
+                << "capture stick in an MPPIC cloud: OpenFOAM v1912's MPPIC"
+                << " tracking can hang on parcels left inactive on a wall"
+                << " (its own localInteraction stick does too); prefer"
+                << " capture remove" << endl;
+        }
+    }
 
     if (maxImpactRecords_ < 0)
     {
