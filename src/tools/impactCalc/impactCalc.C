@@ -41,6 +41,7 @@ Usage
 
 #include "argList.H"
 #include "cloudPatchModel.H"
+#include "gnuplot.H"
 #include "ContactForces.H"
 #include "OFstream.H"
 #include "OSspecific.H"
@@ -191,7 +192,6 @@ void plot
 )
 {
     const fileName data = png.lessExt() + ".dat";
-    const fileName script = png.lessExt() + ".gp";
     {
         std::ofstream out(data);
         out << std::setprecision(10);
@@ -205,10 +205,8 @@ void plot
             out << "\n\n";
         }
     }
-    std::ofstream gp(script);
-    gp  << "set terminal pngcairo size 900,600\n"
-        << "set output '" << png.c_str() << "'\n"
-        << "set key outside right\n"
+    std::ostringstream gp;
+    gp  << "set key outside right\n"
         << "set grid\n"
         << "set logscale x\n"
         << (logY ? "set logscale y\n" : "set yrange [0:*]\n")
@@ -222,12 +220,7 @@ void plot
             << "'";
     }
     gp << '\n';
-    gp.close();
-    if (Foam::system("gnuplot '" + script + "'") != 0)
-    {
-        FatalErrorInFunction
-            << "gnuplot failed on " << script << nl << exit(FatalError);
-    }
+    tools::gnuplot(png, gp.str());
 }
 
 } // End anonymous namespace

@@ -33,6 +33,7 @@ Usage
 
 #include "argList.H"
 #include "cloudPatchModel.H"
+#include "gnuplot.H"
 #include "ImpactFit.H"
 #include "OSspecific.H"
 #include "sigFpe.H"
@@ -132,7 +133,6 @@ void plot
 )
 {
     const fileName dataFile = png.lessExt() + ".dat";
-    const fileName script = png.lessExt() + ".gp";
     const brachDunn::ImpactModel model
     (
         s.particle, s.wall,
@@ -184,10 +184,8 @@ void plot
     }
     out.close();
 
-    std::ofstream gp(script);
-    gp  << "set terminal pngcairo size 900,600\n"
-        << "set output '" << png.c_str() << "'\n"
-        << "set logscale x\nset grid\nset key outside right\n"
+    std::ostringstream gp;
+    gp  << "set logscale x\nset grid\nset key outside right\n"
         << "set yrange [0:1.05]\n"
         << "set xlabel 'incoming normal speed [m/s]'\n"
         << "set ylabel 'rebound ratio Un''/un'\n"
@@ -204,12 +202,7 @@ void plot
             << " title 'fitted'";
     }
     gp << '\n';
-    gp.close();
-    if (Foam::system("gnuplot '" + script + "'") != 0)
-    {
-        FatalErrorInFunction << "gnuplot failed on " << script << nl
-            << exit(FatalError);
-    }
+    tools::gnuplot(png, gp.str());
 }
 
 } // End anonymous namespace
