@@ -385,7 +385,6 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     }
 
     // The patch entries, read and checked once
-    const brachDunn::ElasticMaterial particle = particleMaterial();
     if (!coeffs.found("patches"))
     {
         FatalIOErrorInFunction(coeffs)
@@ -394,17 +393,39 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
             << nl << exit(FatalIOError);
     }
     PtrList<entry> patchList(coeffs.lookup("patches"));
-    entries_.setSize(patchList.size());
-    forAll(patchList, i)
+    bool anyAdhesive = false;
+    for (const entry& e : patchList)
     {
-        if (!patchList[i].isDict())
+        if (!e.isDict())
         {
             FatalIOErrorInFunction(coeffs)
                 << "In dictionary " << coeffs.name() << ": entry "
-                << patchList[i].keyword() << " of 'patches' must be a"
+                << e.keyword() << " of 'patches' must be a"
                 << " dictionary: name { type ...; }" << nl
                 << exit(FatalIOError);
         }
+        anyAdhesive =
+            anyAdhesive
+         || e.dict().getOrDefault<word>("type", word::null) == "adhesive";
+    }
+
+    // The particle's elastic constants matter to adhesive entries only
+    brachDunn::ElasticMaterial particle{0, 0};
+    if (anyAdhesive)
+    {
+        particle = particleMaterial();
+        Info<< "    particle: E " << particle.E << " nu " << particle.nu
+            << (
+                   coeffs.isDict("particle")
+                 ? " (particle)"
+                 : " (constantProperties youngsModulus, poissonsRatio)"
+               )
+            << nl;
+    }
+
+    entries_.setSize(patchList.size());
+    forAll(patchList, i)
+    {
         // Named after its place in the cloud properties, for error messages
         dictionary entryDict(coeffs, patchList[i].dict());
         entryDict.name() =
