@@ -1,6 +1,7 @@
 #include "ImpactModel.H"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace brachDunn
@@ -69,8 +70,11 @@ ImpactResult ImpactModel::impact
     const double normalKE = 0.5*m*un*un;
 
     res.R = restitution_(un, particle.rho, contactModulus_);
+    // The contact radius (a pow) only when there is adhesion to use it
     const AdhesionLaw::Work work =
-        adhesion_(un, contactRadiusSqr(r, normalKE), r);
+        adhesion_.kind() == AdhesionLaw::Kind::none
+      ? AdhesionLaw::Work{0, 0}
+      : adhesion_(un, contactRadiusSqr(r, normalKE), r);
     res.gamma = work.gamma;
     res.WA = work.WA;
 
@@ -155,9 +159,16 @@ Impact3D ImpactModel::impact
     {
         requireFinite("omega", component);
     }
-    const double nMag = mag(n);
-    requirePositive("|n|", nMag);
-    const Vector3 normal = (1/nMag)*n;
+    // OpenFOAM's wall normals are unit vectors already: skip the sqrt and
+    // the division for them
+    const double nMagSqr = dot(n, n);
+    Vector3 normal = n;
+    if (!(std::abs(nMagSqr - 1) <= 1e-14))     // and NaN
+    {
+        const double nMag = std::sqrt(nMagSqr);
+        requirePositive("|n|", nMag);
+        normal = (1/nMag)*n;
+    }
 
     const double Un = dot(U, normal);
     const Vector3 Ut = U - Un*normal;
