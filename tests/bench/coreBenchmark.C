@@ -7,6 +7,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <vector>
 
 using namespace brachDunn;
@@ -47,6 +48,29 @@ void classicalRebound(benchmark::State& state)
     }
 }
 BENCHMARK(classicalRebound);
+
+//- The costs an impact is made of, on the same speeds: what any evaluation
+//  of the power laws must pay at least
+template<class Function>
+void primitive(benchmark::State& state, Function function)
+{
+    std::vector<double> speeds;
+    for (const Vector3& U : impactVelocities())
+    {
+        speeds.push_back(mag(U));
+    }
+    std::size_t i = 0;
+    for (auto _ : state)
+    {
+        double result = function(speeds[i++ & 1023]);
+        benchmark::DoNotOptimize(result);
+    }
+}
+BENCHMARK_CAPTURE(primitive, pow, [](double x) { return std::pow(x, 0.718); });
+BENCHMARK_CAPTURE(primitive, log, [](double x) { return std::log(x); });
+BENCHMARK_CAPTURE(primitive, exp, [](double x) { return std::exp(x); });
+BENCHMARK_CAPTURE(primitive, sqrt, [](double x) { return std::sqrt(x); });
+BENCHMARK_CAPTURE(primitive, division, [](double x) { return 1/x; });
 
 void brachDunnImpact
 (
