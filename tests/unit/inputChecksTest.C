@@ -148,6 +148,76 @@ TEST(InputChecks, SelectionNamesUnknownTypesAndMissingKeywords)
 }
 
 
+TEST(InputChecks, SelectionRejectsKeywordsTheLawDoesNotTake)
+{
+    // A misspelt optional keyword: vanDerWaals would take z = 4e-10 in silence
+    expectInputError
+    (
+        []
+        {
+            AdhesionLaw::select
+            (
+                "vanDerWaals", MapParameters{{"h", 7.3e-19}, {"Z", 3e-10}, {"f", 0.1}}
+            );
+        },
+        "Z", "3e-10"
+    );
+    // Another law's coefficient left behind
+    expectInputError
+    (
+        []
+        {
+            RestitutionLaw::select("constant", MapParameters{{"R", 0.9}, {"k", 45.3}});
+        },
+        "k", "45.3"
+    );
+    expectInputError
+    (
+        []{ FrictionLaw::select("sticking", MapParameters{{"mu", 0.3}}); },
+        "mu", "0.3"
+    );
+    expectInputError
+    (
+        []
+        {
+            RestitutionLaw::select
+            (
+                "table",
+                MapParameters{}.setTable("values", {{0, 1}}).setTable("value", {{0, 1}})
+            );
+        },
+        "value", "(table)"
+    );
+
+    // The message names the law and what it takes
+    try
+    {
+        FrictionLaw::select("coulomb", MapParameters{{"mu", 0.3}, {"e", 0.5}});
+        ADD_FAILURE() << "no error for e";
+    }
+    catch (const InputError& err)
+    {
+        const std::string what = err.what();
+        EXPECT_NE(what.find("friction law coulomb"), std::string::npos) << what;
+        EXPECT_NE(what.find("it takes: mu"), std::string::npos) << what;
+    }
+
+    // Every keyword a law reads, optional ones included, is accepted
+    EXPECT_NO_THROW
+    (
+        AdhesionLaw::select
+        (
+            "vanDerWaals", MapParameters{{"A", 1e-19}, {"z", 3e-10}, {"f", 0.1}}
+        )
+    );
+    EXPECT_NO_THROW
+    (
+        RestitutionLaw::select("elasticPlastic", MapParameters{{"yieldStress", 1e8}})
+    );
+    EXPECT_NO_THROW(FrictionLaw::select("sticking", MapParameters{}));
+}
+
+
 TEST(InputChecks, Impacts)
 {
     const ImpactModel m = paperModel();

@@ -1,6 +1,7 @@
 #include "AdhesiveWallInteraction.H"
 #include "Pstream.H"
 #include "cloud.H"
+#include "wallPolyPatch.H"
 
 #include <type_traits>
 #include <utility>
@@ -79,9 +80,21 @@ Foam::AdhesiveWallInteraction<CloudType>::particleMaterial() const
     using parcelType = typename CloudType::parcelType;
     const dictionary& coeffs = this->coeffDict();
 
-    if (coeffs.isDict("particle"))
+    if (coeffs.found("particle", keyType::LITERAL))
     {
-        return readElasticMaterial(coeffs.subDict("particle"));
+        if (!coeffs.isDict("particle", keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "In dictionary " << coeffs.name() << ": keyword 'particle'"
+                << " must be a dictionary: particle { E <Pa>; nu <->; }"
+                << nl << exit(FatalIOError);
+        }
+        const dictionary& particleDict = coeffs.subDict("particle");
+        requireKnownKeywords
+        (
+            particleDict, {"E", "nu"}, "the particle's elastic constants"
+        );
+        return readElasticMaterial(particleDict);
     }
 
     if constexpr (adhesiveWallInteractionDetail::isColliding<parcelType>::value)
@@ -349,6 +362,18 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     const dictionary& coeffs = this->coeffDict();
     const polyBoundaryMesh& bMesh = cloud.mesh().boundaryMesh();
 
+    // This model's keywords, and those its OpenFOAM base classes read
+    requireKnownKeywords
+    (
+        coeffs,
+        {
+            "particle", "capture", "writeFields", "outputByInjectorId",
+            "writeToFile", "maxImpactRecords", "patches",
+            "U", "writePrecision", "useUserTime"
+        },
+        std::string(typeName) + " coefficients"
+    );
+
     const word capture(coeffs.getOrDefault<word>("capture", "stick"));
     if (capture != "stick" && capture != "remove")
     {
@@ -448,6 +473,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
                 << "No patch matches the entry " << entries_[i].name()
                 << " of " << coeffs.name() << endl;
         }
+        bool used = false;
         for (const label patchi : ids)
         {
             if
@@ -457,7 +483,16 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
             )
             {
                 patchEntry_[patchi] = i;
+                used = true;
             }
+        }
+        if (ids.size() && !used)
+        {
+            WarningInFunction
+                << "The entry " << entries_[i].name() << " of "
+                << coeffs.name() << " is never used: the patches it matches"
+                << " are constraint patches or matched by an earlier entry"
+                << " (the first match applies)" << endl;
         }
     }
 
@@ -476,8 +511,22 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         else if
         (
             entries_[patchEntry_[patchi]].type()
-         != wallInteractionEntry::interaction::none
+         == wallInteractionEntry::interaction::none
         )
+        {
+            WarningInFunction
+                << "Patch " << bMesh[patchi].name() << " has type none: "
+                << (
+                       isA<wallPolyPatch>(bMesh[patchi])
+                     ? "a parcel reaching this wall stops the run (OpenFOAM"
+                       " would leave it on the wall for ever)"
+                     : "its parcels leave as OpenFOAM's system escapes,"
+                       " outside this model's statistics and mass balance"
+                   )
+                << "; use adhesive, rebound, stick or escape to have them"
+                << " handled and counted" << endl;
+        }
+        else
         {
             statRow_[patchi] = statPatches.size();
             statPatches.append(patchi);
@@ -629,6 +678,17 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
     const wallInteractionEntry& entry = entries_[entryi];
     if (entry.type() == interaction::none)
     {
+        if (isA<wallPolyPatch>(pp))
+        {
+            // Declined, OpenFOAM v1912 leaves the parcel on the wall face
+            // and the time step never ends: stop with the reason instead
+            FatalErrorInFunction
+                << "Parcel at " << p.position() << " hit the wall patch "
+                << pp.name() << ", whose entry " << entry.name()
+                << " has type none: nothing would move it off the wall."
+                << " Give walls an adhesive, rebound, stick or escape entry"
+                << exit(FatalError);
+        }
         return false;
     }
 
@@ -754,6 +814,11 @@ template<class CloudType>
 void Foam::AdhesiveWallInteraction<CloudType>::info(Ostream& os)
 {
     PatchInteractionModel<CloudType>::info(os);
+
+    // With writeToFile the base class writes a line of OpenFOAM's system
+    // escapes (patchInteractionModel/<time>/adhesiveWallInteraction.dat)
+    // and leaves it to the model to end it
+    this->file() << endl;
 
     const scalarField total(totalStatistics());
     const polyBoundaryMesh& bMesh = this->owner().mesh().boundaryMesh();

@@ -1,6 +1,7 @@
 #include "wallInteractionEntry.H"
 #include "Tuple2.H"
 #include "IOstreams.H"
+#include "OStringStream.H"
 
 #include <sstream>
 
@@ -10,6 +11,32 @@ namespace
 {
 
 using namespace Foam;
+
+//- An entry's value as one line of text, for messages
+std::string entryText(const entry& e)
+{
+    if (e.isDict())
+    {
+        return "{ ... }";
+    }
+    OStringStream os;
+    const ITstream& tokens = e.stream();
+    forAll(tokens, i)
+    {
+        // Numbers as the core's messages write them, at any writePrecision
+        os << (i ? " " : "");
+        if (tokens[i].isNumber())
+        {
+            os << brachDunn::toText(tokens[i].number()).c_str();
+        }
+        else
+        {
+            os << tokens[i];
+        }
+    }
+    return os.str();
+}
+
 
 //- A law's keywords read from its OpenFOAM sub-dictionary
 class dictionaryParameters
@@ -22,13 +49,25 @@ public:
 
     explicit dictionaryParameters(const dictionary& dict) : dict_(dict) {}
 
-    std::optional<double> find(const std::string& keyword) const override
+    std::vector<std::pair<std::string, std::string>> given() const override
+    {
+        std::vector<std::pair<std::string, std::string>> all;
+        for (const entry& e : dict_)
+        {
+            all.emplace_back(e.keyword(), entryText(e));
+        }
+        return all;
+    }
+
+protected:
+
+    std::optional<double> lookup(const std::string& keyword) const override
     {
         if (!dict_.found(keyword, keyType::LITERAL)) return std::nullopt;
         return dict_.get<scalar>(keyword, keyType::LITERAL);
     }
 
-    std::optional<brachDunn::Table> findTable
+    std::optional<brachDunn::Table> lookupTable
     (
         const std::string& keyword
     ) const override
@@ -52,11 +91,19 @@ public:
 //  a missing one is an error naming the entry
 dictionary lawDict(const dictionary& dict, const word& keyword)
 {
-    if (!dict.isDict(keyword))
+    const entry* found = dict.findEntry(keyword, keyType::LITERAL);
+    if (!found)
     {
         FatalIOErrorInFunction(dict)
             << "In dictionary " << dict.name() << ": keyword '" << keyword
-            << "' is missing or not a dictionary; an adhesive patch needs "
+            << "' is missing; an adhesive patch needs "
+            << keyword << " { type ...; ... }" << nl << exit(FatalIOError);
+    }
+    if (!found->isDict())
+    {
+        FatalIOErrorInFunction(dict)
+            << "In dictionary " << dict.name() << ": keyword '" << keyword
+            << "' = " << entryText(*found).c_str() << ": must be a dictionary, "
             << keyword << " { type ...; ... }" << nl << exit(FatalIOError);
     }
     dictionary sub(dict.subDict(keyword));
@@ -90,6 +137,31 @@ const Foam::wordList Foam::wallInteractionEntry::interactionNames
 
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+void Foam::requireKnownKeywords
+(
+    const dictionary& dict,
+    const wordList& valid,
+    const string& what
+)
+{
+    for (const entry& e : dict)
+    {
+        if (!valid.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "In dictionary " << dict.name() << ": keyword '"
+                << e.keyword() << "' = " << entryText(e).c_str()
+                << ": not a keyword of " << what.c_str() << "; valid keywords:";
+            for (const word& keyword : valid)
+            {
+                FatalIOError << ' ' << keyword;
+            }
+            FatalIOError << nl << exit(FatalIOError);
+        }
+    }
+}
+
 
 brachDunn::ElasticMaterial Foam::readElasticMaterial(const dictionary& dict)
 {
@@ -132,8 +204,16 @@ Foam::wallInteractionEntry::wallInteractionEntry
     }
     type_ = static_cast<interaction>(typeIndex);
 
+    // The entries with coefficients take only their own keywords, so that a
+    // misspelt one is not ignored; stick, escape and none read nothing, and
+    // may keep an adhesive entry's coefficients while cases are compared
     if (type_ == interaction::rebound)
     {
+        requireKnownKeywords
+        (
+            dict, {"type", "e", "mu"}, "patch entries of type rebound"
+        );
+
         // As standardWallInteraction: e in [0, 1], mu a loss fraction in [0, 1]
         e_ = dict.getOrDefault<scalar>("e", 1);
         mu_ = dict.getOrDefault<scalar>("mu", 0);
@@ -145,12 +225,23 @@ Foam::wallInteractionEntry::wallInteractionEntry
     }
     else if (type_ == interaction::adhesive)
     {
+        requireKnownKeywords
+        (
+            dict,
+            {
+                "type", "E", "nu", "restitution", "adhesion", "friction",
+                "momentCoeff", "minReboundSpeed"
+            },
+            "patch entries of type adhesive"
+        );
+
         const brachDunn::ElasticMaterial wall = readElasticMaterial(dict);
         const auto restitution =
             readLaw<brachDunn::RestitutionLaw>(dict, "restitution");
         const auto adhesion = readLaw<brachDunn::AdhesionLaw>(dict, "adhesion");
+        // Sticking when absent; present, it must be a law's dictionary
         const auto friction =
-            dict.isDict("friction")
+            dict.found("friction", keyType::LITERAL)
           ? readLaw<brachDunn::FrictionLaw>(dict, "friction")
           : brachDunn::FrictionLaw::sticking();
         const scalar momentCoeff = dict.getOrDefault<scalar>("momentCoeff", -1);
