@@ -1,6 +1,6 @@
 // The paper's Table 1 impact (4.90 um NH4-fluorescein on molybdenum,
 // v_n = 8.23 m/s, measured V_n = 6.50 m/s), against the values recomputed
-// independently in shared/docs/model-notes.md, to 3 significant figures.
+// independently in doc/model-notes.md, to 3 significant figures.
 
 #include "ContactForces.H"
 #include "testCases.H"
@@ -89,7 +89,7 @@ TEST(PaperTable1, Energies)
 TEST(PaperTable1, VanDerWaalsEnergyEq34)
 {
     // h = 4.56 eV, z = 4 A; Eq. 34 gives 6.18e-12 J (the paper's 1.64e-12
-    // cannot be reproduced from Eq. 34; see model-notes.md)
+    // cannot be reproduced from Eq. 34; see doc/model-notes.md)
     const HertzContact h = paperModel().hertz(sphere, vn);
     ForceReviewInputs in;
     in.h = 4.56*1.602176634e-19;
@@ -126,4 +126,18 @@ TEST(PaperTable1, ForceReviewOrdering)
     );
     // Boltzmann charge of a 4.9 um sphere: about 5 elementary charges
     EXPECT_NEAR(f.charge/1.602176634e-19, 2.37*std::sqrt(4.9), 0.1);
+
+    // A given charge is used as given, of either sign; the image force,
+    // q^2/(16 pi eps_r eps_0 r^2), does not depend on the sign
+    in.charge = -10*1.602176634e-19;
+    const ContactForces negative = contactForces(sphere, h.contactRadius, in);
+    EXPECT_EQ(negative.charge, -10*1.602176634e-19);
+    const double r = sphere.radius();
+    EXPECT_NEAR
+    (
+        negative.image,
+        std::pow(10*1.602176634e-19, 2)
+       /(16*pi*in.relativePermittivity*8.8541878128e-12*r*r),
+        1e-12*negative.image
+    );
 }
