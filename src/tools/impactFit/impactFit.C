@@ -73,7 +73,10 @@ std::vector<brachDunn::Measurement> readImpacts(const fileName& file)
         m.line = line;
         if (!(fields >> m.d >> m.speedIn >> m.speedOut))
         {
-            if (first) { first = false; continue; }     // a header
+            // A header: a first line that does not start with a number
+            std::istringstream start(text);
+            double number;
+            if (first && !(start >> number)) { first = false; continue; }
             FatalErrorInFunction
                 << file.c_str() << " line " << line << ": expected"
                 << " diameter,speedIn,speedOut numbers" << nl
@@ -305,11 +308,13 @@ int main(int argc, char *argv[])
         << "particle E " << s.particle.E << " Pa, nu " << s.particle.nu
         << ", rho " << s.rho << " kg/m^3; wall E " << s.wall.E << " Pa, nu "
         << s.wall.nu << "\n\n"
-        << "Restitution (" << fit.restitution.type << ") from the impacts"
-        << " faster than " << s.minSpeed << " m/s:\n";
+        << "Restitution (" << fit.restitution.type
+        << (s.refine ? ", joint fit below); correlation over" : ") from")
+        << " the impacts faster than " << s.minSpeed << " m/s:\n";
     printFit(os, fit.restitution, "");
-    os  << "Adhesion (" << fit.adhesion.type << ", gamma in J/m^2, un in m/s)"
-        << " from the rebounds at or below " << s.minSpeed << " m/s:\n";
+    os  << "Adhesion (" << fit.adhesion.type << ", gamma in J/m^2, un in m/s"
+        << (s.refine ? ", joint fit below); correlation over" : ") from")
+        << " the rebounds at or below " << s.minSpeed << " m/s:\n";
     printFit(os, fit.adhesion, " J/m^2");
     os  << (s.refine
           ? "Refined: both laws fitted together to every rebound, from "
