@@ -71,10 +71,22 @@ TEST_P(EveryLawCombination, EnergyIdentityEq17)
         const double before = 0.5*mass*(un*un + ut*ut);
         const double after = 0.5*mass*(r.unOut*r.unOut + r.utOut*r.utOut);
         EXPECT_NEAR(r.energyLoss, before - after, 1e-12*before);
+        // The parts: deformation (1 - R^2) m un^2/2, friction the tangential
+        // energy lost; adhesion the rest, so they must add up to the loss
         EXPECT_NEAR
         (
-            r.energyLoss,
+            r.deformationLoss, 0.5*mass*un*un*(1 - r.R*r.R), 1e-12*before
+        );
+        EXPECT_NEAR
+        (
+            r.frictionLoss,
+            0.5*mass*(ut*ut - r.utOut*r.utOut),
+            1e-12*before
+        );
+        EXPECT_NEAR
+        (
             r.deformationLoss + r.adhesionLoss + r.frictionLoss,
+            before - after,
             1e-12*before
         );
 
