@@ -1,6 +1,6 @@
 // Critical (capture) speeds of the paper's Figure 5 (NH4-fluorescein on
 // molybdenum, normal impact, Eq. 23 for R, Eq. 24 for gamma), against the
-// values recomputed in shared/docs/model-notes.md and the paper's text
+// values recomputed in doc/model-notes.md and the paper's text
 // (3.14-0.70 m/s, R(v_c) from 0.952 to 0.983, log-log slope about -1.53).
 
 #include "testCases.H"
