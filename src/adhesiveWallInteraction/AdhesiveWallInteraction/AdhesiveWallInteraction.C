@@ -80,21 +80,9 @@ Foam::AdhesiveWallInteraction<CloudType>::particleMaterial() const
     using parcelType = typename CloudType::parcelType;
     const dictionary& coeffs = this->coeffDict();
 
-    if (coeffs.found("particle", keyType::LITERAL))
+    if (const dictionary* particleDict = findParticleDict(coeffs))
     {
-        if (!coeffs.isDict("particle", keyType::LITERAL))
-        {
-            FatalIOErrorInFunction(coeffs)
-                << "In dictionary " << coeffs.name() << ": keyword 'particle'"
-                << " must be a dictionary: particle { E <Pa>; nu <->; }"
-                << nl << exit(FatalIOError);
-        }
-        const dictionary& particleDict = coeffs.subDict("particle");
-        requireKnownKeywords
-        (
-            particleDict, {"E", "nu"}, "the particle's elastic constants"
-        );
-        return readElasticMaterial(particleDict);
+        return readElasticMaterial(*particleDict);
     }
 
     if constexpr (adhesiveWallInteractionDetail::isColliding<parcelType>::value)
@@ -369,7 +357,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         {
             "particle", "capture", "writeFields", "outputByInjectorId",
             "writeToFile", "maxImpactRecords", "patches",
-            "U", "writePrecision", "useUserTime"
+            "U", "writePrecision", "useUserTime", "defaultCoeffs"
         },
         std::string(typeName) + " coefficients"
     );

@@ -175,6 +175,28 @@ brachDunn::ElasticMaterial Foam::readElasticMaterial(const dictionary& dict)
 }
 
 
+const Foam::dictionary* Foam::findParticleDict(const dictionary& coeffs)
+{
+    const entry* found = coeffs.findEntry("particle", keyType::LITERAL);
+    if (!found)
+    {
+        return nullptr;
+    }
+    if (!found->isDict())
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "In dictionary " << coeffs.name() << ": keyword 'particle' = "
+            << entryText(*found).c_str() << ": must be a dictionary,"
+            << " particle { E <Pa>; nu <->; }" << nl << exit(FatalIOError);
+    }
+    requireKnownKeywords
+    (
+        found->dict(), {"E", "nu"}, "the particle's elastic constants"
+    );
+    return &found->dict();
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::wallInteractionEntry::wallInteractionEntry
