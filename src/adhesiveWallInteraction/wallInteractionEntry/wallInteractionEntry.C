@@ -87,26 +87,41 @@ protected:
 };
 
 
+//- The sub-dictionary under keyword, or nullptr when absent; an entry that
+//  is not a dictionary is an error showing its value and the form expected
+const dictionary* findSubDict
+(
+    const dictionary& dict,
+    const word& keyword,
+    const char* form
+)
+{
+    const entry* found = dict.findEntry(keyword, keyType::LITERAL);
+    if (found && !found->isDict())
+    {
+        FatalIOErrorInFunction(dict)
+            << "In dictionary " << dict.name() << ": keyword '" << keyword
+            << "' = " << entryText(*found).c_str() << ": must be a dictionary, "
+            << keyword << ' ' << form << nl << exit(FatalIOError);
+    }
+    return found ? &found->dict() : nullptr;
+}
+
+
 //- The sub-dictionary of a law, named by its full scope for messages;
 //  a missing one is an error naming the entry
 dictionary lawDict(const dictionary& dict, const word& keyword)
 {
-    const entry* found = dict.findEntry(keyword, keyType::LITERAL);
+    const char* form = "{ type ...; ... }";
+    const dictionary* found = findSubDict(dict, keyword, form);
     if (!found)
     {
         FatalIOErrorInFunction(dict)
             << "In dictionary " << dict.name() << ": keyword '" << keyword
             << "' is missing; an adhesive patch needs "
-            << keyword << " { type ...; ... }" << nl << exit(FatalIOError);
+            << keyword << ' ' << form << nl << exit(FatalIOError);
     }
-    if (!found->isDict())
-    {
-        FatalIOErrorInFunction(dict)
-            << "In dictionary " << dict.name() << ": keyword '" << keyword
-            << "' = " << entryText(*found).c_str() << ": must be a dictionary, "
-            << keyword << " { type ...; ... }" << nl << exit(FatalIOError);
-    }
-    dictionary sub(dict.subDict(keyword));
+    dictionary sub(*found);
     sub.name() = dict.name() + "." + keyword;
     return sub;
 }
@@ -177,23 +192,16 @@ brachDunn::ElasticMaterial Foam::readElasticMaterial(const dictionary& dict)
 
 const Foam::dictionary* Foam::findParticleDict(const dictionary& coeffs)
 {
-    const entry* found = coeffs.findEntry("particle", keyType::LITERAL);
-    if (!found)
+    const dictionary* found =
+        findSubDict(coeffs, "particle", "{ E <Pa>; nu <->; }");
+    if (found)
     {
-        return nullptr;
+        requireKnownKeywords
+        (
+            *found, {"E", "nu"}, "the particle's elastic constants"
+        );
     }
-    if (!found->isDict())
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "In dictionary " << coeffs.name() << ": keyword 'particle' = "
-            << entryText(*found).c_str() << ": must be a dictionary,"
-            << " particle { E <Pa>; nu <->; }" << nl << exit(FatalIOError);
-    }
-    requireKnownKeywords
-    (
-        found->dict(), {"E", "nu"}, "the particle's elastic constants"
-    );
-    return &found->dict();
+    return found;
 }
 
 
