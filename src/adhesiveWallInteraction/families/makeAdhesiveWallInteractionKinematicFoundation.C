@@ -1,0 +1,6 @@
+// adhesiveWallInteraction for the clouds of type momentumCloud (the
+// Foundation's kinematic family)
+#include "momentumCloud.H"
+#include "AdhesiveWallInteraction.H"
+
+makePatchInteractionModelType(AdhesiveWallInteraction, momentumCloud);

@@ -1,0 +1,5 @@
+// adhesiveWallInteraction for the clouds of type mppicCloud
+#include "mppicCloud.H"
+#include "AdhesiveWallInteraction.H"
+
+makePatchInteractionModelType(AdhesiveWallInteraction, mppicCloud);
