@@ -1,7 +1,9 @@
 #include "AdhesiveWallInteraction.H"
+#include "checkedInput.H"
+#include "OSspecific.H"
 #include "Pstream.H"
-#include "cloud.H"
 #include "wallPolyPatch.H"
+#include "mathematicalConstants.H"
 
 #include <type_traits>
 #include <utility>
@@ -66,10 +68,11 @@ const char* const fateNames[] = {"rebound", "capture", "escape"};
 template<class CloudType>
 Foam::fileName Foam::AdhesiveWallInteraction<CloudType>::outputDir() const
 {
+    // As OpenFOAM's cloud function objects: postProcessing/lagrangian/<cloud>
     const Time& time = this->owner().mesh().time();
     return
-        time.globalPath()/"postProcessing"/cloud::prefix
-       /this->owner().name()/typeName/time.timeName();
+        time.rootPath()/time.globalCaseName()/"postProcessing"/"lagrangian"
+       /this->owner().name()/typeName/compat::timeName(time);
 }
 
 
@@ -78,7 +81,7 @@ brachDunn::ElasticMaterial
 Foam::AdhesiveWallInteraction<CloudType>::particleMaterial() const
 {
     using parcelType = typename CloudType::parcelType;
-    const dictionary& coeffs = this->coeffDict();
+    const dictionary& coeffs = this->coeffs();
 
     if (const dictionary* particleDict = findParticleDict(coeffs))
     {
@@ -92,7 +95,7 @@ Foam::AdhesiveWallInteraction<CloudType>::particleMaterial() const
         {
             props.youngsModulus(), props.poissonsRatio()
         };
-        checkedCoreCall(coeffs, [&]{ material.check(); });
+        checkedInput::coreCall(coeffs, [&]{ material.check(); });
         return material;
     }
 
@@ -124,7 +127,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
     const scalar nParticle = p.nParticle();
     const scalar mass = nParticle*p.mass();
     const scalar speed = Foam::sqrt(un*un + ut*ut);
-    const scalar angle = radToDeg(Foam::atan2(ut, un));
+    const scalar angle = Foam::atan2(ut, un)*180/constant::mathematical::pi;
 
     // Columns are fate-major: (parcels, particles, mass) of rebound, capture,
     // escape, then (speed, angle) sums of rebound and capture
@@ -163,7 +166,8 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
     if (maxImpactRecords_ > 0 && !recordsClosed_)
     {
         const Time& time = this->owner().mesh().time();
-        const vector position = p.position();
+        const vector position =
+            compat::position(p, this->owner().mesh());
         const scalar record[recordSize] =
         {
             time.value() - (1 - p.stepFraction())*time.deltaTValue(),
@@ -187,7 +191,7 @@ Foam::string Foam::AdhesiveWallInteraction<CloudType>::rowName
     const label row
 ) const
 {
-    const polyBoundaryMesh& bMesh = this->owner().mesh().boundaryMesh();
+    const polyBoundaryMesh& bMesh = compat::boundaryMesh(this->owner().mesh());
     string name(bMesh[statPatches_[row/nInjectors_]].name());
     if (injectorIds_.size())
     {
@@ -205,7 +209,7 @@ Foam::AdhesiveWallInteraction<CloudType>::totalStatistics()
     reduce(total, sumOp<scalarField>());
 
     // Earlier runs: one list of nInjectors rows per patch
-    const polyBoundaryMesh& bMesh = this->owner().mesh().boundaryMesh();
+    const polyBoundaryMesh& bMesh = compat::boundaryMesh(this->owner().mesh());
     const label patchSize = nInjectors_*nStatistics;
     forAll(statPatches_, patchRow)
     {
@@ -241,7 +245,8 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeImpactRecords()
     if (Pstream::master() && !recordsClosed_)
     {
         OFstream& os = *recordFilePtr_;
-        const polyBoundaryMesh& bMesh = this->owner().mesh().boundaryMesh();
+        const polyBoundaryMesh& bMesh =
+            compat::boundaryMesh(this->owner().mesh());
         for (const scalarList& buffer : buffers)
         {
             for (label start = 0; start < buffer.size(); start += recordSize)
@@ -270,7 +275,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeImpactRecords()
         }
         os.flush();
     }
-    Pstream::scatter(recordsClosed_);
+    compat::broadcast(recordsClosed_);
 }
 
 
@@ -290,7 +295,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::massBalance
     scalar airborne = 0;
     for (const auto& p : this->owner())
     {
-        if (p.active())
+        if (compat::isActive(p))
         {
             airborne += p.nParticle()*p.mass();
         }
@@ -323,54 +328,54 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     CloudType& cloud
 )
 :
-    PatchInteractionModel<CloudType>(dict, cloud, typeName),
+    compat::PatchInteractionModel<CloudType>(dict, cloud, typeName),
     entries_(),
-    patchEntry_(cloud.mesh().boundaryMesh().size(), -1),
+    patchEntry_(compat::boundaryMesh(cloud.mesh()).size(), -1),
     statPatches_(),
-    statRow_(cloud.mesh().boundaryMesh().size(), -1),
+    statRow_(compat::boundaryMesh(cloud.mesh()).size(), -1),
     removeCaptured_(false),
-    writeFields_(this->coeffDict().getOrDefault("writeFields", false)),
+    writeFields_
+    (
+        checkedInput::readSwitch(this->coeffs(), "writeFields", false)
+    ),
     injectorIndex_(),
     injectorIds_(),
     nInjectors_(1),
     stats_(),
-    massStickPtr_(nullptr),
-    nStickPtr_(nullptr),
-    massEscapePtr_(nullptr),
+    massStickPtr_(),
+    nStickPtr_(),
+    massEscapePtr_(),
     maxImpactRecords_
     (
-        this->coeffDict().getOrDefault("maxImpactRecords", label(0))
+        checkedInput::readCount(this->coeffs(), "maxImpactRecords", 0)
     ),
     nImpactRecords_(0),
     recordsClosed_(false),
+    writeToFile_(checkedInput::readSwitch(this->coeffs(), "writeToFile", false)),
     recordBuffer_(),
-    recordFilePtr_(nullptr),
-    statsFilePtr_(nullptr)
+    recordFilePtr_(),
+    statsFilePtr_()
 {
-    const dictionary& coeffs = this->coeffDict();
-    const polyBoundaryMesh& bMesh = cloud.mesh().boundaryMesh();
+    const dictionary& coeffs = this->coeffs();
+    const polyBoundaryMesh& bMesh = compat::boundaryMesh(cloud.mesh());
 
     // This model's keywords, and those its OpenFOAM base classes read
-    requireKnownKeywords
+    wordList keywords
+    {
+        "particle", "capture", "writeFields", "outputByInjectorId",
+        "writeToFile", "maxImpactRecords", "patches"
+    };
+    keywords.append(compat::baseKeywords());
+    checkedInput::requireKnownKeywords
     (
-        coeffs,
-        {
-            "particle", "capture", "writeFields", "outputByInjectorId",
-            "writeToFile", "maxImpactRecords", "patches",
-            "U", "writePrecision", "useUserTime", "defaultCoeffs"
-        },
-        std::string(typeName) + " coefficients"
+        coeffs, keywords, std::string(typeName) + " coefficients"
     );
 
-    const word capture(coeffs.getOrDefault<word>("capture", "stick"));
-    if (capture != "stick" && capture != "remove")
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "In dictionary " << coeffs.name() << ": keyword 'capture' = "
-            << capture << ": valid values are stick and remove"
-            << nl << exit(FatalIOError);
-    }
-    removeCaptured_ = (capture == "remove");
+    removeCaptured_ =
+        checkedInput::readWord
+        (
+            coeffs, "capture", "stick", {"stick", "remove"}
+        ) == "remove";
     if constexpr
     (
         adhesiveWallInteractionDetail::isMPPIC
@@ -389,23 +394,15 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         }
     }
 
-    if (maxImpactRecords_ < 0)
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "In dictionary " << coeffs.name()
-            << ": keyword 'maxImpactRecords' = " << maxImpactRecords_
-            << ": must be >= 0" << nl << exit(FatalIOError);
-    }
-
     // The patch entries, read and checked once
-    if (!coeffs.found("patches"))
+    if (!checkedInput::find(coeffs, "patches"))
     {
         FatalIOErrorInFunction(coeffs)
             << "In dictionary " << coeffs.name() << ": keyword 'patches' is"
             << " missing: give a list of (patch name or regex) { type ...; }"
             << nl << exit(FatalIOError);
     }
-    PtrList<entry> patchList(coeffs.lookup("patches"));
+    PtrList<entry> patchList(checkedInput::find(coeffs, "patches")->stream());
     bool anyAdhesive = false;
     for (const entry& e : patchList)
     {
@@ -419,7 +416,10 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         }
         anyAdhesive =
             anyAdhesive
-         || e.dict().getOrDefault<word>("type", word::null) == "adhesive";
+         || (
+                checkedInput::find(e.dict(), "type")
+             && checkedInput::readWord(e.dict(), "type") == "adhesive"
+            );
     }
 
     // The particle's elastic constants matter to adhesive entries only
@@ -429,7 +429,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         particle = particleMaterial();
         Info<< "    particle: E " << particle.E << " nu " << particle.nu
             << (
-                   coeffs.isDict("particle")
+                   findParticleDict(coeffs)
                  ? " (particle)"
                  : " (constantProperties youngsModulus, poissonsRatio)"
                )
@@ -454,7 +454,14 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     // applies to it
     forAll(entries_, i)
     {
-        const labelList ids(bMesh.indices(entries_[i].name()));
+        DynamicList<label> ids;
+        forAll(bMesh, patchi)
+        {
+            if (entries_[i].name().match(bMesh[patchi].name()))
+            {
+                ids.append(patchi);
+            }
+        }
         if (ids.empty())
         {
             WarningInFunction
@@ -464,11 +471,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         bool used = false;
         for (const label patchi : ids)
         {
-            if
-            (
-                patchEntry_[patchi] < 0
-             && !polyPatch::constraintType(bMesh[patchi].type())
-            )
+            if (patchEntry_[patchi] < 0 && !compat::isConstraint(bMesh[patchi]))
             {
                 patchEntry_[patchi] = i;
                 used = true;
@@ -488,7 +491,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     DynamicList<label> statPatches;
     forAll(bMesh, patchi)
     {
-        if (polyPatch::constraintType(bMesh[patchi].type()))
+        if (compat::isConstraint(bMesh[patchi]))
         {
             continue;
         }
@@ -530,12 +533,22 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     }
     statPatches_.transfer(statPatches);
     // By injector, as standardWallInteraction's outputByInjectorId
-    if (coeffs.getOrDefault("outputByInjectorId", false))
+    if (checkedInput::readSwitch(coeffs, "outputByInjectorId", false))
     {
+        if (!compat::parcelsKnowTheirInjector)
+        {
+            checkedInput::fail
+            (
+                coeffs, "outputByInjectorId", "yes",
+                std::string("not available on ") + compat::flavour()
+              + "'s OpenFOAM, whose parcels do not carry their injector"
+            );
+        }
         for (const auto& injector : cloud.injectors())
         {
-            injectorIndex_.insert(injector.injectorID(), injectorIds_.size());
-            injectorIds_.append(injector.injectorID());
+            const label id = compat::injectorId(injector);
+            injectorIndex_[id] = injectorIds_.size();
+            injectorIds_.append(id);
         }
         nInjectors_ = max(injectorIds_.size(), label(1));
     }
@@ -551,21 +564,18 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         const fvMesh& mesh = cloud.mesh();
         const auto field = [&](const word& name, const dimensionSet& dims)
         {
-            return autoPtr<volScalarField>
+            return std::make_unique<volScalarField>
             (
-                new volScalarField
+                IOobject
                 (
-                    IOobject
-                    (
-                        cloud.name() + ":" + name,
-                        mesh.time().timeName(),
-                        mesh,
-                        IOobject::READ_IF_PRESENT,
-                        IOobject::AUTO_WRITE
-                    ),
+                    cloud.name() + ":" + name,
+                    compat::timeName(mesh.time()),
                     mesh,
-                    dimensionedScalar(dims, Zero)
-                )
+                    IOobject::READ_IF_PRESENT,
+                    IOobject::AUTO_WRITE
+                ),
+                mesh,
+                dimensionedScalar("zero", dims, 0)
             );
         };
         massStickPtr_ = field("massStick", dimMass);
@@ -577,11 +587,11 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
             << endl;
     }
 
-    if (Pstream::master() && (this->writeToFile() || maxImpactRecords_ > 0))
+    if (Pstream::master() && (writeToFile_ || maxImpactRecords_ > 0))
     {
         mkDir(outputDir());
     }
-    if (Pstream::master() && this->writeToFile())
+    if (Pstream::master() && writeToFile_)
     {
         statsFilePtr_.reset(new OFstream(outputDir()/"statistics.dat"));
         OFstream& os = *statsFilePtr_;
@@ -622,7 +632,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     const AdhesiveWallInteraction<CloudType>& pim
 )
 :
-    PatchInteractionModel<CloudType>(pim),
+    compat::PatchInteractionModel<CloudType>(pim),
     entries_(pim.entries_),
     patchEntry_(pim.patchEntry_),
     statPatches_(pim.statPatches_),
@@ -633,15 +643,16 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     injectorIds_(pim.injectorIds_),
     nInjectors_(pim.nInjectors_),
     stats_(pim.stats_),
-    massStickPtr_(nullptr),
-    nStickPtr_(nullptr),
-    massEscapePtr_(nullptr),
+    massStickPtr_(),
+    nStickPtr_(),
+    massEscapePtr_(),
     maxImpactRecords_(0),
     nImpactRecords_(0),
     recordsClosed_(true),
+    writeToFile_(false),
     recordBuffer_(),
-    recordFilePtr_(nullptr),
-    statsFilePtr_(nullptr)
+    recordFilePtr_(),
+    statsFilePtr_()
 {}
 
 
@@ -671,7 +682,8 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
             // Declined, OpenFOAM v1912 leaves the parcel on the wall face
             // and the time step never ends: stop with the reason instead
             FatalErrorInFunction
-                << "Parcel at " << p.position() << " hit the wall patch "
+                << "Parcel at " << compat::position(p, this->owner().mesh())
+                << " hit the wall patch "
                 << pp.name() << ", whose entry " << entry.name()
                 << " has type none: nothing would move it off the wall."
                 << " Give walls an adhesive, rebound, stick or escape entry"
@@ -693,7 +705,7 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
     const auto capture = [&]()
     {
         keepParticle = !removeCaptured_;
-        p.active(false);
+        compat::setActive(p, false);
         U = Zero;
         if constexpr (isColliding<typename CloudType::parcelType>::value)
         {
@@ -706,7 +718,7 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
         case interaction::escape:
         {
             keepParticle = false;
-            p.active(false);
+            compat::setActive(p, false);
             U = Zero;
             count(p, pp, fate::escape, Un, ut, 0, 0, 0, 0);
             break;
@@ -721,7 +733,7 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
         {
             // standardWallInteraction's rebound, e and mu as there
             keepParticle = true;
-            p.active(true);
+            compat::setActive(p, true);
             vector Uout = Urel;
             if (Un > 0)
             {
@@ -758,7 +770,8 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
             catch (const brachDunn::InputError& err)
             {
                 FatalErrorInFunction
-                    << "Parcel at " << p.position() << " on patch "
+                    << "Parcel at " << compat::position(p, this->owner().mesh())
+                    << " on patch "
                     << pp.name() << ": " << err.what() << nl
                     << exit(FatalError);
             }
@@ -777,7 +790,7 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
             }
 
             keepParticle = true;
-            p.active(true);
+            compat::setActive(p, true);
             U = fromCore(out.U) + Up;
             if constexpr (isColliding<typename CloudType::parcelType>::value)
             {
@@ -799,17 +812,10 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
 
 
 template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::info(Ostream& os)
+void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
 {
-    PatchInteractionModel<CloudType>::info(os);
-
-    // With writeToFile the base class writes a line of OpenFOAM's system
-    // escapes (patchInteractionModel/<time>/adhesiveWallInteraction.dat)
-    // and leaves it to the model to end it
-    this->file() << endl;
-
     const scalarField total(totalStatistics());
-    const polyBoundaryMesh& bMesh = this->owner().mesh().boundaryMesh();
+    const polyBoundaryMesh& bMesh = compat::boundaryMesh(this->owner().mesh());
 
     const auto mean = [](scalar sum, scalar n)
     {
@@ -843,7 +849,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::info(Ostream& os)
             << mean(s[reboundAngleSum], s[reboundParticles]) << " deg" << nl;
     }
 
-    if (statsFilePtr_.valid())
+    if (statsFilePtr_)
     {
         OFstream& file = *statsFilePtr_;
         file << this->owner().mesh().time().value();

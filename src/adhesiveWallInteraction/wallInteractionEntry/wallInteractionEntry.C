@@ -1,8 +1,8 @@
 #include "wallInteractionEntry.H"
+#include "checkedInput.H"
 #include "Tuple2.H"
-#include "IOstreams.H"
-#include "OStringStream.H"
 
+#include <algorithm>
 #include <sstream>
 
 // * * * * * * * * * * * * * * * Local Classes * * * * * * * * * * * * * * //
@@ -11,32 +11,6 @@ namespace
 {
 
 using namespace Foam;
-
-//- An entry's value as one line of text, for messages
-std::string entryText(const entry& e)
-{
-    if (e.isDict())
-    {
-        return "{ ... }";
-    }
-    OStringStream os;
-    const ITstream& tokens = e.stream();
-    forAll(tokens, i)
-    {
-        // Numbers as the core's messages write them, at any writePrecision
-        os << (i ? " " : "");
-        if (tokens[i].isNumber())
-        {
-            os << brachDunn::toText(tokens[i].number()).c_str();
-        }
-        else
-        {
-            os << tokens[i];
-        }
-    }
-    return os.str();
-}
-
 
 //- A law's keywords read from its OpenFOAM sub-dictionary
 class dictionaryParameters
@@ -54,7 +28,7 @@ public:
         std::vector<std::pair<std::string, std::string>> all;
         for (const entry& e : dict_)
         {
-            all.emplace_back(e.keyword(), entryText(e));
+            all.emplace_back(e.keyword(), checkedInput::entryText(e));
         }
         return all;
     }
@@ -63,8 +37,8 @@ protected:
 
     std::optional<double> lookup(const std::string& keyword) const override
     {
-        if (!dict_.found(keyword, keyType::LITERAL)) return std::nullopt;
-        return dict_.get<scalar>(keyword, keyType::LITERAL);
+        if (!checkedInput::find(dict_, keyword)) return std::nullopt;
+        return checkedInput::readNumber(dict_, keyword);
     }
 
     std::optional<brachDunn::Table> lookupTable
@@ -72,11 +46,17 @@ protected:
         const std::string& keyword
     ) const override
     {
-        if (!dict_.found(keyword, keyType::LITERAL)) return std::nullopt;
-        const List<Tuple2<scalar, scalar>> pairs
-        (
-            dict_.get<List<Tuple2<scalar, scalar>>>(keyword, keyType::LITERAL)
-        );
+        const entry* e = checkedInput::find(dict_, keyword);
+        if (!e) return std::nullopt;
+        if (e->isDict())
+        {
+            checkedInput::fail
+            (
+                dict_, keyword, "{ ... }",
+                "must be a list of (speed value) pairs, not a dictionary"
+            );
+        }
+        const List<Tuple2<scalar, scalar>> pairs(e->stream());
         brachDunn::Table table;
         for (const auto& pair : pairs)
         {
@@ -87,53 +67,19 @@ protected:
 };
 
 
-//- The sub-dictionary under keyword, or nullptr when absent; an entry that
-//  is not a dictionary is an error showing its value and the form expected
-const dictionary* findSubDict
-(
-    const dictionary& dict,
-    const word& keyword,
-    const char* form
-)
-{
-    const entry* found = dict.findEntry(keyword, keyType::LITERAL);
-    if (found && !found->isDict())
-    {
-        FatalIOErrorInFunction(dict)
-            << "In dictionary " << dict.name() << ": keyword '" << keyword
-            << "' = " << entryText(*found).c_str() << ": must be a dictionary, "
-            << keyword << ' ' << form << nl << exit(FatalIOError);
-    }
-    return found ? &found->dict() : nullptr;
-}
-
-
-//- The sub-dictionary of a law, named by its full scope for messages;
-//  a missing one is an error naming the entry
-dictionary lawDict(const dictionary& dict, const word& keyword)
-{
-    const char* form = "{ type ...; ... }";
-    const dictionary* found = findSubDict(dict, keyword, form);
-    if (!found)
-    {
-        FatalIOErrorInFunction(dict)
-            << "In dictionary " << dict.name() << ": keyword '" << keyword
-            << "' is missing; an adhesive patch needs "
-            << keyword << ' ' << form << nl << exit(FatalIOError);
-    }
-    dictionary sub(*found);
-    sub.name() = dict.name() + "." + keyword;
-    return sub;
-}
-
-
 //- Build a law by its type name from its sub-dictionary
 template<class Law>
 Law readLaw(const dictionary& dict, const word& keyword)
 {
-    const dictionary sub(lawDict(dict, keyword));
-    const word type(sub.get<word>("type"));
-    return checkedCoreCall
+    const dictionary sub
+    (
+        checkedInput::subDictionary
+        (
+            dict, keyword, "{ type ...; ... }", "an adhesive patch entry"
+        )
+    );
+    const word type(checkedInput::readWord(sub, "type"));
+    return checkedInput::coreCall
     (
         sub,
         [&]{ return Law::select(type, dictionaryParameters(sub)); }
@@ -151,52 +97,29 @@ const Foam::wordList Foam::wallInteractionEntry::interactionNames
 };
 
 
-// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
-
-void Foam::requireKnownKeywords
-(
-    const dictionary& dict,
-    const wordList& valid,
-    const string& what
-)
-{
-    for (const entry& e : dict)
-    {
-        if (!valid.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "In dictionary " << dict.name() << ": keyword '"
-                << e.keyword() << "' = " << entryText(e).c_str()
-                << ": not a keyword of " << what.c_str() << "; valid keywords:";
-            for (const word& keyword : valid)
-            {
-                FatalIOError << ' ' << keyword;
-            }
-            FatalIOError << nl << exit(FatalIOError);
-        }
-    }
-}
-
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
 
 brachDunn::ElasticMaterial Foam::readElasticMaterial(const dictionary& dict)
 {
     const brachDunn::ElasticMaterial material
     {
-        dict.get<scalar>("E"),
-        dict.get<scalar>("nu")
+        checkedInput::readNumber(dict, "E"),
+        checkedInput::readNumber(dict, "nu")
     };
-    checkedCoreCall(dict, [&]{ material.check(); });
+    checkedInput::coreCall(dict, [&]{ material.check(); });
     return material;
 }
 
 
 const Foam::dictionary* Foam::findParticleDict(const dictionary& coeffs)
 {
-    const dictionary* found =
-        findSubDict(coeffs, "particle", "{ E <Pa>; nu <->; }");
+    const dictionary* found = checkedInput::findDictionary
+    (
+        coeffs, "particle", "{ E <Pa>; nu <->; }"
+    );
     if (found)
     {
-        requireKnownKeywords
+        checkedInput::requireKnownKeywords
         (
             *found, {"E", "nu"}, "the particle's elastic constants"
         );
@@ -219,35 +142,38 @@ Foam::wallInteractionEntry::wallInteractionEntry
     e_(1),
     mu_(0)
 {
-    const word typeName(dict.get<word>("type"));
-    const label typeIndex = interactionNames.find(typeName);
-    if (typeIndex < 0)
+    const word typeName(checkedInput::readWord(dict, "type"));
+    const auto found =
+        std::find(interactionNames.begin(), interactionNames.end(), typeName);
+    if (found == interactionNames.end())
     {
-        FatalIOErrorInFunction(dict)
-            << "In dictionary " << dict.name() << ": keyword 'type' = "
-            << typeName << ": unknown patch interaction; valid types:";
+        std::string names;
         for (const word& name : interactionNames)
         {
-            FatalIOError << ' ' << name;
+            names += ' ' + name;
         }
-        FatalIOError << nl << exit(FatalIOError);
+        checkedInput::fail
+        (
+            dict, "type", typeName, "unknown patch interaction; valid types:"
+          + names
+        );
     }
-    type_ = static_cast<interaction>(typeIndex);
+    type_ = static_cast<interaction>(found - interactionNames.begin());
 
     // The entries with coefficients take only their own keywords, so that a
     // misspelt one is not ignored; stick, escape and none read nothing, and
     // may keep an adhesive entry's coefficients while cases are compared
     if (type_ == interaction::rebound)
     {
-        requireKnownKeywords
+        checkedInput::requireKnownKeywords
         (
             dict, {"type", "e", "mu"}, "patch entries of type rebound"
         );
 
         // As standardWallInteraction: e in [0, 1], mu a loss fraction in [0, 1]
-        e_ = dict.getOrDefault<scalar>("e", 1);
-        mu_ = dict.getOrDefault<scalar>("mu", 0);
-        checkedCoreCall(dict, [&]
+        e_ = checkedInput::readNumber(dict, "e", 1);
+        mu_ = checkedInput::readNumber(dict, "mu", 0);
+        checkedInput::coreCall(dict, [&]
         {
             brachDunn::requireInRange("e", e_, 0, 1);
             brachDunn::requireInRange("mu", mu_, 0, 1);
@@ -255,7 +181,7 @@ Foam::wallInteractionEntry::wallInteractionEntry
     }
     else if (type_ == interaction::adhesive)
     {
-        requireKnownKeywords
+        checkedInput::requireKnownKeywords
         (
             dict,
             {
@@ -271,17 +197,19 @@ Foam::wallInteractionEntry::wallInteractionEntry
         const auto adhesion = readLaw<brachDunn::AdhesionLaw>(dict, "adhesion");
         // Sticking when absent; present, it must be a law's dictionary
         const auto friction =
-            dict.found("friction", keyType::LITERAL)
+            checkedInput::find(dict, "friction")
           ? readLaw<brachDunn::FrictionLaw>(dict, "friction")
           : brachDunn::FrictionLaw::sticking();
-        const scalar momentCoeff = dict.getOrDefault<scalar>("momentCoeff", -1);
-        const scalar minReboundSpeed = dict.getOrDefault<scalar>
+        const scalar momentCoeff =
+            checkedInput::readNumber(dict, "momentCoeff", -1);
+        const scalar minReboundSpeed = checkedInput::readNumber
         (
-            "minReboundSpeed", brachDunn::ImpactModel::defaultMinReboundSpeed
+            dict, "minReboundSpeed",
+            brachDunn::ImpactModel::defaultMinReboundSpeed
         );
         model_.emplace
         (
-            checkedCoreCall(dict, [&]
+            checkedInput::coreCall(dict, [&]
             {
                 return brachDunn::ImpactModel
                 (

@@ -46,7 +46,7 @@ Usage
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "scalarList.H"
-#include "unitConversion.H"
+#include "mathematicalConstants.H"
 
 #include <fstream>
 #include <iomanip>
@@ -61,8 +61,8 @@ using namespace Foam;
 namespace
 {
 
-//- A list option such as "(1e-6 2e-6)", each value checked
-//  (angles: in [0, 90) degrees; anything else: > 0)
+//- A list option, each value checked (angles: in [0, 90) degrees;
+//  anything else: > 0); the default when absent and one is given
 scalarList listOption
 (
     const argList& args,
@@ -70,45 +70,15 @@ scalarList listOption
     const scalarList& deflt
 )
 {
-    if (!args.found(name))
+    if (!tools::found(args, name) && !deflt.empty())
     {
-        if (deflt.empty())
-        {
-            FatalErrorInFunction
-                << "Option -" << name << " \"(...)\" is required" << nl
-                << exit(FatalError);
-        }
         return deflt;
     }
-    scalarList values;
-    const bool throwing = FatalIOError.throwExceptions(true);
-    bool malformed = false;
-    try
-    {
-        values = args.getList<scalar>(name);
-    }
-    catch (const Foam::error&)
-    {
-        malformed = true;
-    }
-    FatalIOError.throwExceptions(throwing);
-    if (malformed)
-    {
-        FatalErrorInFunction
-            << "Option -" << name << " " << args[name]
-            << " is not a list of numbers such as \"(1 2.5 4e-6)\"" << nl
-            << exit(FatalError);
-    }
-    if (values.empty())
-    {
-        FatalErrorInFunction
-            << "Option -" << name << " is an empty list" << nl
-            << exit(FatalError);
-    }
+    const scalarList values(tools::list(args, name));
     const bool angles = (name == "angles");
     for (const scalar v : values)
     {
-        if (angles ? !(v >= 0 && v < 90) : !(v > 0 && v < GREAT))
+        if (angles ? !(v >= 0 && v < 90) : !(v > 0))
         {
             FatalErrorInFunction
                 << "Option -" << name << ": value " << v
@@ -117,6 +87,13 @@ scalarList listOption
         }
     }
     return values;
+}
+
+
+//- Degrees to radians
+inline scalar radians(const scalar degrees)
+{
+    return degrees*constant::mathematical::pi/180;
 }
 
 
@@ -234,7 +211,7 @@ int main(int argc, char *argv[])
         " speeds and angles; critical speeds; one impact in detail"
     );
     argList::noParallel();
-    argList::noBanner();
+    compat::noBanner();
     argList::addOption("dict", "file", "cloud properties file");
     argList::addOption("patch", "name", "patch whose entry applies");
     argList::addOption("rho", "value", "particle density [kg/m^3]");
@@ -259,11 +236,6 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
 
-    if (!args.found("patch"))
-    {
-        FatalErrorInFunction << "Option -patch NAME is required" << nl
-            << exit(FatalError);
-    }
 
     const fileName propsFile = tools::cloudPropertiesFile(args);
     IFstream propsStream(propsFile);
@@ -271,7 +243,7 @@ int main(int argc, char *argv[])
     const dictionary& coeffs = tools::adhesiveCoeffs(cloudProperties);
     const brachDunn::ElasticMaterial particleMaterial =
         tools::particleMaterial(cloudProperties, coeffs);
-    const word patchName(args.get<word>("patch"));
+    const word patchName(tools::text(args, "patch"));
     const wallInteractionEntry entry =
         tools::patchEntry(coeffs, patchName, particleMaterial);
     if
@@ -290,20 +262,20 @@ int main(int argc, char *argv[])
         listOption(args, "diameters", scalarList());
     const scalarList angles =
         listOption(args, "angles", scalarList(1, Zero));
-    const bool critical = args.found("critical");
+    const bool critical = tools::found(args, "critical");
 
     std::unique_ptr<std::ofstream> file;
-    if (args.found("output"))
+    if (tools::found(args, "output"))
     {
-        file.reset(new std::ofstream(args.get<fileName>("output")));
+        file.reset(new std::ofstream(tools::text(args, "output")));
         if (!file->good())
         {
-            FatalErrorInFunction << "Cannot write " << args["output"] << nl
+            FatalErrorInFunction << "Cannot write " << tools::text(args, "output").c_str() << nl
                 << exit(FatalError);
         }
     }
     std::ostream& os = file ? *file : std::cout;
-    const label precision = args.getOrDefault<label>("precision", 10);
+    const label precision = tools::integer(args, "precision", 10);
     if (precision < 1 || precision > 17)
     {
         FatalErrorInFunction << "Option -precision " << precision
@@ -321,7 +293,7 @@ int main(int argc, char *argv[])
                 << entry.typeName() << ": critical speeds need an adhesive"
                 << " entry" << nl << exit(FatalError);
         }
-        const word method(args.getOrDefault<word>("criticalMethod", "consistent"));
+        const word method(tools::wordOption(args, "criticalMethod", "consistent"));
         if (method != "consistent" && method != "paper")
         {
             FatalErrorInFunction
@@ -346,7 +318,7 @@ int main(int argc, char *argv[])
                     return entry.model().criticalSpeed
                     (
                         brachDunn::Particle{d, rho},
-                        std::tan(degToRad(angle)),
+                        std::tan(radians(angle)),
                         method == "paper"
                       ? brachDunn::CriticalMethod::paper
                       : brachDunn::CriticalMethod::consistent
@@ -370,7 +342,7 @@ int main(int argc, char *argv[])
         const scalarList speeds =
             listOption(args, "speeds", scalarList());
 
-        if (args.found("diagnostics"))
+        if (tools::found(args, "diagnostics"))
         {
             #include "diagnostics.H"
         }
@@ -387,8 +359,8 @@ int main(int argc, char *argv[])
                     series.push_back({title.str(), {}});
                     for (const scalar v : speeds)
                     {
-                        const scalar un = v*std::cos(degToRad(angle));
-                        const scalar ut = v*std::sin(degToRad(angle));
+                        const scalar un = v*std::cos(radians(angle));
+                        const scalar ut = v*std::sin(radians(angle));
                         const brachDunn::ImpactResult r =
                             impactOn(entry, brachDunn::Particle{d, rho}, un, ut);
                         os  << d << ',' << v << ',' << angle << ','
@@ -408,13 +380,13 @@ int main(int argc, char *argv[])
     }
     os.flush();
 
-    if (args.found("plot"))
+    if (tools::found(args, "plot"))
     {
         if (critical)
         {
             plot
             (
-                args.get<fileName>("plot"), series, "particle diameter [m]",
+                fileName(tools::text(args, "plot")), series, "particle diameter [m]",
                 "critical speed [m/s]", true
             );
         }
@@ -422,7 +394,7 @@ int main(int argc, char *argv[])
         {
             plot
             (
-                args.get<fileName>("plot"), series, "incoming speed [m/s]",
+                fileName(tools::text(args, "plot")), series, "incoming speed [m/s]",
                 "rebound ratio Un''/un", false
             );
         }

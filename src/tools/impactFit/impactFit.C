@@ -36,11 +36,13 @@ Usage
 #include "gnuplot.H"
 #include "ImpactFit.H"
 #include "OSspecific.H"
-#include "sigFpe.H"
+
+#include <fenv.h>
 
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 using namespace Foam;
@@ -102,13 +104,12 @@ scalar materialValue
     const scalar* fromDict
 )
 {
-    scalar value = 0;
-    if (args.readIfPresent(option, value)) return value;
+    if (tools::found(args, option)) return tools::number(args, option);
     if (fromDict) return *fromDict;
     FatalErrorInFunction
         << "Option -" << option << " is required (or -dict/-patch giving"
         << " the materials)" << nl << exit(FatalError);
-    return value;
+    return 0;
 }
 
 
@@ -219,7 +220,7 @@ int main(int argc, char *argv[])
         " measured normal impacts"
     );
     argList::noParallel();
-    argList::noBanner();
+    compat::noBanner();
     argList::addOption("data", "file", "CSV of diameter,speedIn,speedOut");
     argList::addOption("dict", "file", "cloud properties giving the materials");
     argList::addOption("patch", "name", "patch entry giving the wall material");
@@ -237,22 +238,17 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
 
     // The fits mark rejected trial steps with infinite residuals: no
-    // floating-point traps here
-    sigFpe::unset();
+    // floating-point traps (OpenFOAM's FOAM_SIGFPE) here
+    fedisableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
 
-    if (!args.found("data"))
-    {
-        FatalErrorInFunction << "Option -data FILE is required" << nl
-            << exit(FatalError);
-    }
-    const fileName dataFile = args.get<fileName>("data");
+    const fileName dataFile(tools::text(args, "data"));
     const std::vector<brachDunn::Measurement> data = readImpacts(dataFile);
 
     // Materials from the dictionary when given, options override
     brachDunn::ImpactFitSettings s;
     std::unique_ptr<brachDunn::ElasticMaterial> particleDict, wallDict;
     std::unique_ptr<scalar> rhoDict;
-    if (args.found("patch"))
+    if (tools::found(args, "patch"))
     {
         IFstream stream(tools::cloudPropertiesFile(args));
         const dictionary cloudProperties(stream);
@@ -263,21 +259,26 @@ int main(int argc, char *argv[])
         ));
         const wallInteractionEntry entry = tools::patchEntry
         (
-            coeffs, args.get<word>("patch"), *particleDict
+            coeffs, tools::text(args, "patch"), *particleDict
         );
         if (entry.type() != wallInteractionEntry::interaction::adhesive)
         {
             FatalErrorInFunction
-                << "Patch " << args["patch"] << " is of type "
+                << "Patch " << tools::text(args, "patch").c_str() << " is of type "
                 << entry.typeName() << ", not adhesive: it has no wall"
                 << " material" << nl << exit(FatalError);
         }
         wallDict.reset(new brachDunn::ElasticMaterial(entry.model().wallMaterial()));
-        const dictionary* constProps = cloudProperties.findDict("constantProperties");
-        scalar rho = 0;
-        if (constProps && constProps->readIfPresent("rho0", rho))
+        const dictionary* constProps = checkedInput::findDictionary
+        (
+            cloudProperties, "constantProperties", "{ ... }"
+        );
+        if (constProps && checkedInput::find(*constProps, "rho0"))
         {
-            rhoDict.reset(new scalar(rho));
+            rhoDict.reset
+            (
+                new scalar(checkedInput::readNumber(*constProps, "rho0"))
+            );
         }
     }
     s.particle.E = materialValue(args, "particleE", particleDict ? &particleDict->E : nullptr);
@@ -285,10 +286,10 @@ int main(int argc, char *argv[])
     s.wall.E = materialValue(args, "wallE", wallDict ? &wallDict->E : nullptr);
     s.wall.nu = materialValue(args, "wallNu", wallDict ? &wallDict->nu : nullptr);
     s.rho = materialValue(args, "rho", rhoDict.get());
-    s.minSpeed = args.getOrDefault<scalar>("minSpeed", 10);
-    s.restitutionType = args.getOrDefault<word>("restitution", "powerLaw");
-    s.adhesionType = args.getOrDefault<word>("adhesion", "powerLaw");
-    s.refine = !args.found("noRefine");
+    s.minSpeed = tools::number(args, "minSpeed", 10);
+    s.restitutionType = tools::wordOption(args, "restitution", "powerLaw");
+    s.adhesionType = tools::wordOption(args, "adhesion", "powerLaw");
+    s.refine = !tools::found(args, "noRefine");
 
     brachDunn::ImpactFitResult fit;
     try
@@ -325,9 +326,9 @@ int main(int argc, char *argv[])
         << "    restitution " << fit.restitution.dictionary() << '\n'
         << "    adhesion    " << fit.adhesion.dictionary() << '\n';
 
-    if (args.found("plot"))
+    if (tools::found(args, "plot"))
     {
-        plot(args.get<fileName>("plot"), data, fit, s);
+        plot(fileName(tools::text(args, "plot")), data, fit, s);
     }
     return 0;
 }

@@ -1,0 +1,322 @@
+#include "checkedInput.H"
+#include "releaseCompat.H"
+#include "OStringStream.H"
+
+#include <algorithm>
+#include <cmath>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- The tokens of a primitive entry; a dictionary is an error
+const ITstream& tokensOf
+(
+    const dictionary& dict,
+    const entry& e,
+    const char* expected
+)
+{
+    if (e.isDict())
+    {
+        checkedInput::fail
+        (
+            dict, e.keyword(), "{ ... }",
+            std::string("must be ") + expected + ", not a dictionary"
+        );
+    }
+    return e.stream();
+}
+
+
+//- A word OpenFOAM reads where a number was meant to be infinite or NaN
+bool namesNonFinite(const token& t)
+{
+    if (!t.isWord()) return false;
+    std::string w(t.wordToken());
+    std::transform(w.begin(), w.end(), w.begin(), ::tolower);
+    if (!w.empty() && (w[0] == '-' || w[0] == '+')) w.erase(0, 1);
+    return w == "inf" || w == "infinity" || w == "nan";
+}
+
+
+//- The single number of an entry
+scalar numberOf(const dictionary& dict, const entry& e)
+{
+    const ITstream& tokens = tokensOf(dict, e, "a number");
+    const std::string text = checkedInput::entryText(e);
+    if (tokens.size() == 1 && namesNonFinite(tokens[0]))
+    {
+        checkedInput::fail(dict, e.keyword(), text, "must be a finite number");
+    }
+    if (tokens.size() != 1 || !tokens[0].isNumber())
+    {
+        checkedInput::fail(dict, e.keyword(), text, "must be one number");
+    }
+    const scalar value = tokens[0].number();
+    if (!std::isfinite(value))
+    {
+        checkedInput::fail(dict, e.keyword(), text, "must be a finite number");
+    }
+    return value;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
+
+std::string Foam::checkedInput::entryText(const entry& e)
+{
+    if (e.isDict())
+    {
+        return "{ ... }";
+    }
+    OStringStream os;
+    const ITstream& tokens = e.stream();
+    forAll(tokens, i)
+    {
+        os << (i ? " " : "");
+        if (tokens[i].isNumber())
+        {
+            os << brachDunn::toText(tokens[i].number()).c_str();
+        }
+        else
+        {
+            os << tokens[i];
+        }
+    }
+    return os.str();
+}
+
+
+const Foam::entry* Foam::checkedInput::find
+(
+    const dictionary& dict,
+    const word& keyword
+)
+{
+    return compat::findEntry(dict, keyword);
+}
+
+
+void Foam::checkedInput::fail
+(
+    const dictionary& dict,
+    const std::string& keyword,
+    const std::string& value,
+    const std::string& requirement
+)
+{
+    FatalIOErrorInFunction(dict)
+        << "In dictionary " << dict.name() << ": keyword '" << keyword.c_str()
+        << "' = " << value.c_str() << ": " << requirement.c_str() << nl
+        << exit(FatalIOError);
+    std::abort();   // not reached: exit() stops the run or throws
+}
+
+
+Foam::scalar Foam::checkedInput::readNumber
+(
+    const dictionary& dict,
+    const word& keyword
+)
+{
+    const entry* e = find(dict, keyword);
+    if (!e)
+    {
+        fail(dict, keyword, "missing", "keyword is required");
+    }
+    return numberOf(dict, *e);
+}
+
+
+Foam::scalar Foam::checkedInput::readNumber
+(
+    const dictionary& dict,
+    const word& keyword,
+    const scalar deflt
+)
+{
+    const entry* e = find(dict, keyword);
+    return e ? numberOf(dict, *e) : deflt;
+}
+
+
+Foam::label Foam::checkedInput::readCount
+(
+    const dictionary& dict,
+    const word& keyword,
+    const label deflt
+)
+{
+    const entry* e = find(dict, keyword);
+    if (!e)
+    {
+        return deflt;
+    }
+    const scalar value = numberOf(dict, *e);
+    if (!(value >= 0 && value == std::floor(value) && value <= labelMax))
+    {
+        fail
+        (
+            dict, keyword, entryText(*e),
+            "must be a whole number >= 0 (at most " + std::to_string(labelMax)
+          + ")"
+        );
+    }
+    return label(value);
+}
+
+
+bool Foam::checkedInput::readSwitch
+(
+    const dictionary& dict,
+    const word& keyword,
+    const bool deflt
+)
+{
+    const entry* e = find(dict, keyword);
+    if (!e)
+    {
+        return deflt;
+    }
+    const ITstream& tokens = tokensOf(dict, *e, "yes or no");
+    if (tokens.size() == 1)
+    {
+        const token& t = tokens[0];
+        if (t.isWord())
+        {
+            const word& w = t.wordToken();
+            if (w == "yes" || w == "on" || w == "true") return true;
+            if (w == "no" || w == "off" || w == "false") return false;
+        }
+        else if (t.isNumber() && (t.number() == 0 || t.number() == 1))
+        {
+            return t.number() == 1;
+        }
+    }
+    fail
+    (
+        dict, keyword, entryText(*e),
+        "must be yes or no (also on/off, true/false, 1/0)"
+    );
+}
+
+
+Foam::word Foam::checkedInput::readWord
+(
+    const dictionary& dict,
+    const word& keyword
+)
+{
+    const entry* e = find(dict, keyword);
+    if (!e)
+    {
+        fail(dict, keyword, "missing", "keyword is required");
+    }
+    const ITstream& tokens = tokensOf(dict, *e, "a word");
+    if (tokens.size() != 1 || !tokens[0].isWord())
+    {
+        fail(dict, keyword, entryText(*e), "must be one word");
+    }
+    return tokens[0].wordToken();
+}
+
+
+Foam::word Foam::checkedInput::readWord
+(
+    const dictionary& dict,
+    const word& keyword,
+    const word& deflt,
+    const wordList& valid
+)
+{
+    if (!find(dict, keyword))
+    {
+        return deflt;
+    }
+    const word value(readWord(dict, keyword));
+    if (std::find(valid.begin(), valid.end(), value) == valid.end())
+    {
+        std::string names;
+        for (const word& name : valid)
+        {
+            names += (names.empty() ? "" : ", ") + name;
+        }
+        fail(dict, keyword, value, "valid values are " + names);
+    }
+    return value;
+}
+
+
+const Foam::dictionary* Foam::checkedInput::findDictionary
+(
+    const dictionary& dict,
+    const word& keyword,
+    const char* form
+)
+{
+    const entry* found = find(dict, keyword);
+    if (found && !found->isDict())
+    {
+        fail
+        (
+            dict, keyword, entryText(*found),
+            "must be a dictionary, " + keyword + ' ' + form
+        );
+    }
+    return found ? &found->dict() : nullptr;
+}
+
+
+Foam::dictionary Foam::checkedInput::subDictionary
+(
+    const dictionary& dict,
+    const word& keyword,
+    const char* form,
+    const char* neededBy
+)
+{
+    const dictionary* found = findDictionary(dict, keyword, form);
+    if (!found)
+    {
+        fail
+        (
+            dict, keyword, "missing",
+            std::string(neededBy) + " needs " + keyword + ' ' + form
+        );
+    }
+    dictionary sub(*found);
+    sub.name() = dict.name() + "." + keyword;
+    return sub;
+}
+
+
+void Foam::checkedInput::requireKnownKeywords
+(
+    const dictionary& dict,
+    const wordList& valid,
+    const std::string& what
+)
+{
+    for (const entry& e : dict)
+    {
+        if (std::find(valid.begin(), valid.end(), e.keyword()) == valid.end())
+        {
+            std::string names;
+            for (const word& keyword : valid)
+            {
+                names += ' ' + keyword;
+            }
+            fail
+            (
+                dict, e.keyword(), entryText(e),
+                "not a keyword of " + what + "; valid keywords:" + names
+            );
+        }
+    }
+}
