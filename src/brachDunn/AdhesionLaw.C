@@ -39,7 +39,7 @@ AdhesionLaw vanDerWaalsFrom(const Parameters& parameters)
     );
 }
 
-//- The laws by type name, in the order of AdhesionLaw::Kind
+//- The laws by type name, in the order of AdhesionLaw::Law
 const Selector<AdhesionLaw> selectors[] =
 {
     {"none", [](const Parameters&) { return AdhesionLaw::none(); }},
@@ -55,16 +55,14 @@ const Selector<AdhesionLaw> selectors[] =
 
 AdhesionLaw AdhesionLaw::none()
 {
-    return AdhesionLaw(Kind::none);
+    return AdhesionLaw(None{});
 }
 
 
 AdhesionLaw AdhesionLaw::constant(double gamma)
 {
     requireNonNegative("gamma", gamma);
-    AdhesionLaw law(Kind::constant);
-    law.a_ = gamma;
-    return law;
+    return AdhesionLaw(Constant{gamma});
 }
 
 
@@ -72,10 +70,7 @@ AdhesionLaw AdhesionLaw::powerLaw(double c, double n)
 {
     requireNonNegative("c", c);
     requireNonNegative("n", n);
-    AdhesionLaw law(Kind::powerLaw);
-    law.a_ = c;
-    law.b_ = n;
-    return law;
+    return AdhesionLaw(PowerLaw{c, n});
 }
 
 
@@ -84,11 +79,7 @@ AdhesionLaw AdhesionLaw::vanDerWaals(double h, double z, double f)
     requirePositive("h", h);
     requirePositive("z", z);
     requireInRange("f", f, 0, 1);
-    AdhesionLaw law(Kind::vanDerWaals);
-    law.a_ = h;
-    law.b_ = z;
-    law.fraction_ = f;
-    return law;
+    return AdhesionLaw(VanDerWaals{h, z, f});
 }
 
 
@@ -111,7 +102,7 @@ const std::vector<std::string>& AdhesionLaw::typeNames()
 
 const std::string& AdhesionLaw::typeName() const
 {
-    return typeNames()[static_cast<int>(kind_)];
+    return typeNames()[law_.index()];
 }
 
 
@@ -120,14 +111,17 @@ std::string AdhesionLaw::describe() const
     std::ostringstream os;
     os.precision(6);
     os << "type " << typeName() << ";";
-    switch (kind_)
+    if (const auto* law = as<Constant>())
     {
-        case Kind::none: break;
-        case Kind::constant: os << " gamma " << a_ << ";"; break;
-        case Kind::powerLaw: os << " c " << a_ << "; n " << b_ << ";"; break;
-        case Kind::vanDerWaals:
-            os << " h " << a_ << "; z " << b_ << "; f " << fraction_ << ";";
-            break;
+        os << " gamma " << law->gamma << ";";
+    }
+    else if (const auto* law = as<PowerLaw>())
+    {
+        os << " c " << law->c << "; n " << law->n << ";";
+    }
+    else if (const auto* law = as<VanDerWaals>())
+    {
+        os << " h " << law->h << "; z " << law->z << "; f " << law->f << ";";
     }
     return os.str();
 }

@@ -9,7 +9,7 @@ namespace brachDunn
 namespace
 {
 
-//- The laws by type name, in the order of FrictionLaw::Kind
+//- The laws by type name, in the order of FrictionLaw::Law
 const Selector<FrictionLaw> selectors[] =
 {
     {"sticking", [](const Parameters&) { return FrictionLaw::sticking(); }},
@@ -39,7 +39,7 @@ const std::vector<std::string>& FrictionLaw::typeNames()
 
 const std::string& FrictionLaw::typeName() const
 {
-    return typeNames()[static_cast<int>(kind_)];
+    return typeNames()[law_.index()];
 }
 
 
@@ -48,7 +48,7 @@ std::string FrictionLaw::describe() const
     std::ostringstream os;
     os.precision(6);
     os << "type " << typeName() << ";";
-    if (kind_ == Kind::coulomb) os << " mu " << mu_ << ";";
+    if (const auto* law = as<Coulomb>()) os << " mu " << law->mu << ";";
     return os.str();
 }
 

@@ -72,7 +72,7 @@ ImpactResult ImpactModel::impact
     res.R = restitution_(un, particle.rho, contactModulus_);
     // The contact radius (a pow) only when there is adhesion to use it
     const AdhesionLaw::Work work =
-        adhesion_.kind() == AdhesionLaw::Kind::none
+        adhesion_.as<AdhesionLaw::None>()
       ? AdhesionLaw::Work{0, 0}
       : adhesion_(un, contactRadiusSqr(r, normalKE), r);
     res.gamma = work.gamma;
@@ -116,10 +116,9 @@ ImpactResult ImpactModel::impact
     res.normalImpulse = m*(un + res.unOut);
 
     // Sliding stops (sticking) unless the Coulomb limit is reached first
+    const auto* coulomb = friction_.as<FrictionLaw::Coulomb>();
     const double slidingImpulse =
-        friction_.kind() == FrictionLaw::Kind::coulomb
-      ? friction_.coefficient()*res.normalImpulse
-      : m*ut;
+        coulomb ? coulomb->mu*res.normalImpulse : m*ut;
     if (slidingImpulse < m*ut)
     {
         res.tangentialImpulse = slidingImpulse;
@@ -229,8 +228,7 @@ HertzContact ImpactModel::hertz(const Particle& particle, double un) const
         std::sqrt(aSqr),
         approach,
         4.0/3*contactModulus_*std::sqrt(r)*std::pow(approach, 1.5),
-        2.94*approach/un,
-        contactModulus_
+        2.94*approach/un
     };
 }
 

@@ -34,7 +34,7 @@ RestitutionLaw elasticPlasticFrom(const Parameters& parameters)
     );
 }
 
-//- The laws by type name, in the order of RestitutionLaw::Kind
+//- The laws by type name
 const Selector<RestitutionLaw> selectors[] =
 {
     {"constant", [](const Parameters& p)
@@ -54,9 +54,7 @@ const Selector<RestitutionLaw> selectors[] =
 RestitutionLaw RestitutionLaw::constant(double R)
 {
     requireInRange("R", R, 0, 1);
-    RestitutionLaw law(Kind::constant);
-    law.a_ = R;
-    return law;
+    return RestitutionLaw(Constant{R});
 }
 
 
@@ -64,10 +62,7 @@ RestitutionLaw RestitutionLaw::powerLaw(double k, double p)
 {
     requirePositive("k", k);
     requireNonNegative("p", p);
-    RestitutionLaw law(Kind::powerLaw);
-    law.a_ = k;
-    law.b_ = p;
-    return law;
+    return RestitutionLaw(PowerLaw{k, p});
 }
 
 
@@ -78,28 +73,24 @@ RestitutionLaw RestitutionLaw::viscousDamping(double zeta)
     {
         throw InputError("zeta", toText(zeta), "must be in [0, 1)");
     }
-    RestitutionLaw law(Kind::viscousDamping);
-    law.a_ = std::exp(-pi*zeta/std::sqrt(1 - zeta*zeta));
-    law.b_ = zeta;
-    return law;
+    return RestitutionLaw
+    (
+        ViscousDamping{zeta, std::exp(-pi*zeta/std::sqrt(1 - zeta*zeta))}
+    );
 }
 
 
 RestitutionLaw RestitutionLaw::elasticPlasticYieldVelocity(double vy)
 {
     requirePositive("yieldVelocity", vy);
-    RestitutionLaw law(Kind::elasticPlastic);
-    law.yieldVelocity_ = vy;
-    return law;
+    return RestitutionLaw(ElasticPlastic{vy});
 }
 
 
 RestitutionLaw RestitutionLaw::elasticPlasticYieldStress(double py)
 {
     requirePositive("yieldStress", py);
-    RestitutionLaw law(Kind::elasticPlastic);
-    law.yieldStress_ = py;
-    return law;
+    return RestitutionLaw(ElasticPlasticFromStress{py});
 }
 
 
@@ -109,12 +100,12 @@ RestitutionLaw RestitutionLaw::table(const Table& speedAndR)
     {
         throw InputError("values", "()", "needs at least one (speed R) pair");
     }
-    RestitutionLaw law(Kind::table);
+    Tabulated table;
     for (const auto& [speed, R] : speedAndR)
     {
         requireNonNegative("values (speed)", speed);
         requireInRange("values (R)", R, 0, 1);
-        if (!law.speeds_.empty() && !(speed > law.speeds_.back()))
+        if (!table.speeds.empty() && !(speed > table.speeds.back()))
         {
             throw InputError
             (
@@ -123,10 +114,10 @@ RestitutionLaw RestitutionLaw::table(const Table& speedAndR)
                 "speeds must increase strictly down the table"
             );
         }
-        law.speeds_.push_back(speed);
-        law.values_.push_back(R);
+        table.speeds.push_back(speed);
+        table.values.push_back(R);
     }
-    return law;
+    return RestitutionLaw(std::move(table));
 }
 
 
@@ -149,7 +140,9 @@ const std::vector<std::string>& RestitutionLaw::typeNames()
 
 const std::string& RestitutionLaw::typeName() const
 {
-    return typeNames()[static_cast<int>(kind_)];
+    // Both elasticPlastic forms are one type name
+    static const std::size_t index[] = {0, 1, 2, 3, 3, 4};
+    return typeNames()[index[law_.index()]];
 }
 
 
@@ -158,30 +151,35 @@ std::string RestitutionLaw::describe() const
     std::ostringstream os;
     os.precision(6);
     os << "type " << typeName() << ";";
-    switch (kind_)
+    if (const auto* law = as<Constant>())
     {
-        case Kind::constant: os << " R " << a_ << ";"; break;
-        case Kind::powerLaw: os << " k " << a_ << "; p " << b_ << ";"; break;
-        case Kind::viscousDamping: os << " zeta " << b_ << ";"; break;
-        case Kind::elasticPlastic:
-            if (yieldVelocity_ > 0)
-            {
-                os << " yieldVelocity " << yieldVelocity_ << ";";
-            }
-            else
-            {
-                os << " yieldStress " << yieldStress_ << ";";
-            }
-            break;
-        case Kind::table:
-            os << " values (";
-            for (std::size_t i = 0; i < speeds_.size(); ++i)
-            {
-                os << (i ? " " : "") << "(" << speeds_[i] << " "
-                   << values_[i] << ")";
-            }
-            os << ");";
-            break;
+        os << " R " << law->R << ";";
+    }
+    else if (const auto* law = as<PowerLaw>())
+    {
+        os << " k " << law->k << "; p " << law->p << ";";
+    }
+    else if (const auto* law = as<ViscousDamping>())
+    {
+        os << " zeta " << law->zeta << ";";
+    }
+    else if (const auto* law = as<ElasticPlastic>())
+    {
+        os << " yieldVelocity " << law->yieldVelocity << ";";
+    }
+    else if (const auto* law = as<ElasticPlasticFromStress>())
+    {
+        os << " yieldStress " << law->yieldStress << ";";
+    }
+    else if (const auto* law = as<Tabulated>())
+    {
+        os << " values (";
+        for (std::size_t i = 0; i < law->speeds.size(); ++i)
+        {
+            os << (i ? " " : "") << "(" << law->speeds[i] << " "
+               << law->values[i] << ")";
+        }
+        os << ");";
     }
     return os.str();
 }
@@ -198,37 +196,42 @@ double RestitutionLaw::thornton(double x)
 }
 
 
-double RestitutionLaw::evaluateSlow
+double RestitutionLaw::yieldVelocity
 (
-    double un,
+    double yieldStress,
     double rho,
     double contactModulus
-) const
+)
 {
-    if (kind_ == Kind::elasticPlastic)
-    {
-        double vy = yieldVelocity_;
-        if (vy <= 0)
-        {
-            const double E4 = std::pow(contactModulus, 4);
-            vy = std::sqrt(pi*pi*pi*pi/40)
-                *std::sqrt(std::pow(yieldStress_, 5)/(E4*rho));
-        }
-        if (!(un > vy))
-        {
-            return 1;
-        }
-        return std::min(1.0, thornton(vy/un));
-    }
+    // sqrt(pi^4/40) sqrt(py^5/(E*^4 rho)), as py (py/E*)^4 so that no power
+    // of a pressure overflows
+    const double ratio = yieldStress/contactModulus;
+    const double ratio2 = ratio*ratio;
+    return std::sqrt(pi*pi*pi*pi/40)*std::sqrt(yieldStress*ratio2*ratio2/rho);
+}
 
-    // table
-    if (un <= speeds_.front()) return values_.front();
-    if (un >= speeds_.back()) return values_.back();
+
+double RestitutionLaw::elasticPlastic(double yieldVelocity, double un)
+{
+    if (!(un > yieldVelocity))
+    {
+        return 1;
+    }
+    return std::min(1.0, thornton(yieldVelocity/un));
+}
+
+
+double RestitutionLaw::tabulated(const Tabulated& table, double un)
+{
+    const std::vector<double>& speeds = table.speeds;
+    const std::vector<double>& values = table.values;
+    if (un <= speeds.front()) return values.front();
+    if (un >= speeds.back()) return values.back();
     const auto upper =
-        std::upper_bound(speeds_.begin(), speeds_.end(), un) - speeds_.begin();
-    const double s0 = speeds_[upper - 1], s1 = speeds_[upper];
+        std::upper_bound(speeds.begin(), speeds.end(), un) - speeds.begin();
+    const double s0 = speeds[upper - 1], s1 = speeds[upper];
     const double w = (un - s0)/(s1 - s0);
-    return (1 - w)*values_[upper - 1] + w*values_[upper];
+    return (1 - w)*values[upper - 1] + w*values[upper];
 }
 
 } // End namespace brachDunn

@@ -1,10 +1,8 @@
 #include "ImpactFit.H"
-
-#include <Eigen/Dense>
+#include "LeastSquares.H"
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <sstream>
 
 namespace brachDunn
@@ -13,97 +11,7 @@ namespace brachDunn
 namespace
 {
 
-using Eigen::MatrixXd;
 using Eigen::VectorXd;
-
-struct LeastSquares
-{
-    VectorXd theta;
-    VectorXd standardErrors;
-    VectorXd fitted;
-    bool determined;    //!< J^T J of full rank at the solution
-};
-
-
-//- Levenberg-Marquardt on model(theta) against y, with a central
-//  difference Jacobian; standard errors from s^2 (J^T J)^-1
-LeastSquares levenbergMarquardt
-(
-    const std::function<VectorXd(const VectorXd&)>& model,
-    const VectorXd& y,
-    VectorXd theta
-)
-{
-    const int n = y.size(), p = theta.size();
-    const auto rss = [&](const VectorXd& t)
-    {
-        const double s = (model(t) - y).squaredNorm();
-        return std::isfinite(s) ? s : HUGE_VAL;
-    };
-    const auto jacobian = [&](const VectorXd& t)
-    {
-        MatrixXd J(n, p);
-        for (int j = 0; j < p; ++j)
-        {
-            const double h = 1e-6*std::max(std::abs(t(j)), 1e-3);
-            VectorXd up = t, down = t;
-            up(j) += h;
-            down(j) -= h;
-            J.col(j) = (model(up) - model(down))/(2*h);
-        }
-        return J;
-    };
-
-    double lambda = 1e-3;
-    double current = rss(theta);
-    for (int iter = 0; iter < 500; ++iter)
-    {
-        const MatrixXd J = jacobian(theta);
-        const MatrixXd A = J.transpose()*J;
-        const VectorXd g = J.transpose()*(model(theta) - y);
-        MatrixXd damped = A;
-        damped.diagonal() += lambda*A.diagonal().cwiseMax(1e-300);
-        const VectorXd step = -damped.ldlt().solve(g);
-        const VectorXd trial = theta + step;
-        const double next = rss(trial);
-        if (next < current)
-        {
-            const bool settled =
-                step.norm() <= 1e-13*(theta.norm() + 1e-13)
-             || current - next <= 1e-16*current;
-            theta = trial;
-            current = next;
-            lambda = std::max(lambda/10, 1e-12);
-            if (settled) break;
-        }
-        else
-        {
-            lambda *= 10;
-            if (lambda > 1e12) break;
-        }
-    }
-
-    const MatrixXd J = jacobian(theta);
-    const Eigen::FullPivLU<MatrixXd> lu(J.transpose()*J);
-    if (lu.rank() < p)
-    {
-        // A coefficient does not move the model (e.g. held at its bound)
-        return {theta, VectorXd::Zero(p), model(theta), false};
-    }
-    const double s2 = n > p ? current/(n - p) : 0;
-    const MatrixXd covariance = s2*lu.inverse();
-    return {theta, covariance.diagonal().cwiseSqrt(), model(theta), true};
-}
-
-
-double pearson(const VectorXd& a, const VectorXd& b)
-{
-    const VectorXd da = a.array() - a.mean();
-    const VectorXd db = b.array() - b.mean();
-    const double denominator = da.norm()*db.norm();
-    return denominator > 0 ? da.dot(db)/denominator : 0;
-}
-
 
 //- Keep the law types to the two the fits know
 void checkType(const char* keyword, const std::string& type)
@@ -188,6 +96,227 @@ void requirePoints
     }
 }
 
+
+//- The rebound ratios Un'/un measured
+VectorXd measuredRatios(const std::vector<Measurement>& impacts)
+{
+    VectorXd ratios(impacts.size());
+    for (std::size_t i = 0; i < impacts.size(); ++i)
+    {
+        ratios(i) = impacts[i].speedOut/impacts[i].speedIn;
+    }
+    return ratios;
+}
+
+
+//- The restitution law of fitted parameters: (log k, p) or (R)
+RestitutionLaw restitutionLaw(const VectorXd& theta)
+{
+    return
+        theta.size() == 2
+      ? RestitutionLaw::powerLaw(std::exp(theta(0)), theta(1))
+      : RestitutionLaw::constant(std::clamp(theta(0), 0.0, 1.0));
+}
+
+
+//- The adhesion law of fitted parameters: (log c, n) or (gamma); none
+//  before the first fit
+AdhesionLaw adhesionLaw(const VectorXd& theta)
+{
+    if (theta.size() == 0) return AdhesionLaw::none();
+    return
+        theta.size() == 2
+      ? AdhesionLaw::powerLaw(std::exp(theta(0)), std::max(theta(1), 0.0))
+      : AdhesionLaw::constant(std::max(theta(0), 0.0));
+}
+
+
+//- The model's rebound ratio of each impact for the laws of these
+//  parameters; HUGE_VAL for every impact when a trial step leaves the
+//  laws' range (p < 0, or an exponent that would overflow)
+VectorXd modelRatios
+(
+    const std::vector<Measurement>& impacts,
+    const VectorXd& restitutionTheta,
+    const VectorXd& adhesionTheta,
+    const ImpactFitSettings& s
+)
+{
+    VectorXd ratios(impacts.size());
+    for (const VectorXd* theta : {&restitutionTheta, &adhesionTheta})
+    {
+        if (theta->size() == 2 && !((*theta)(0) < 700 && std::abs((*theta)(1)) < 50))
+        {
+            return VectorXd::Constant(impacts.size(), HUGE_VAL);
+        }
+    }
+    try
+    {
+        const ImpactModel model
+        (
+            s.particle, s.wall, restitutionLaw(restitutionTheta),
+            adhesionLaw(adhesionTheta), FrictionLaw::sticking(), -1, 0
+        );
+        for (std::size_t i = 0; i < impacts.size(); ++i)
+        {
+            const Measurement& m = impacts[i];
+            ratios(i) = model.impact(Particle{m.d, s.rho}, m.speedIn, 0).unOut/m.speedIn;
+        }
+    }
+    catch (const InputError&)
+    {
+        ratios.setConstant(HUGE_VAL);
+    }
+    return ratios;
+}
+
+
+//- gamma of each rebounding impact from its measured rebound (Eqs. 18 and
+//  22) under the restitution law of these parameters
+VectorXd measuredSurfaceEnergies
+(
+    const std::vector<Measurement>& impacts,
+    const VectorXd& restitutionTheta,
+    const ImpactFitSettings& s
+)
+{
+    const ImpactModel measuring
+    (
+        s.particle, s.wall, restitutionLaw(restitutionTheta),
+        AdhesionLaw::none(), FrictionLaw::sticking(), -1, 0
+    );
+    VectorXd gamma(impacts.size());
+    for (std::size_t i = 0; i < impacts.size(); ++i)
+    {
+        const Measurement& m = impacts[i];
+        gamma(i) = measuring.measuredAdhesion
+        (
+            Particle{m.d, s.rho}, m.speedIn, m.speedOut
+        ).gamma;
+    }
+    return gamma;
+}
+
+
+//- gamma of the adhesion law of these parameters at each speed
+VectorXd lawSurfaceEnergies(const VectorXd& theta, const VectorXd& un)
+{
+    if (theta.size() == 2)
+    {
+        return VectorXd(std::exp(theta(0))*un.array().pow(theta(1)));
+    }
+    return VectorXd::Constant(un.size(), theta(0));
+}
+
+
+//- Starting restitution parameters: the median ratio at the median speed
+VectorXd initialRestitution
+(
+    const std::vector<Measurement>& fast,
+    const std::string& type
+)
+{
+    std::vector<double> ratios;
+    for (const Measurement& m : fast) ratios.push_back(m.speedOut/m.speedIn);
+    std::sort(ratios.begin(), ratios.end());
+    const double R = std::clamp(ratios[ratios.size()/2], 0.05, 0.99);
+    if (type == "powerLaw")
+    {
+        const double v = fast[fast.size()/2].speedIn;
+        return (VectorXd(2) << std::log(R*std::pow(v, 0.7)/(1 - R)), 0.7).finished();
+    }
+    return VectorXd::Constant(1, R);
+}
+
+
+//- Starting adhesion parameters: a log-log line through the positive
+//  values, or their mean
+VectorXd initialAdhesion
+(
+    const VectorXd& un,
+    const VectorXd& gamma,
+    const std::string& type
+)
+{
+    if (type != "powerLaw")
+    {
+        return VectorXd::Constant(1, std::max(gamma.mean(), 0.0));
+    }
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int count = 0;
+    for (int i = 0; i < gamma.size(); ++i)
+    {
+        if (gamma(i) <= 0) continue;
+        const double x = std::log(un(i)), y = std::log(gamma(i));
+        sx += x; sy += y; sxx += x*x; sxy += x*y; ++count;
+    }
+    const double slope =
+        count > 1 && count*sxx - sx*sx > 0
+      ? (count*sxy - sx*sy)/(count*sxx - sx*sx) : 0.5;
+    const double intercept = count ? (sy - slope*sx)/count : -1;
+    return (VectorXd(2) << intercept, slope).finished();
+}
+
+
+//- Check the measurements; split the rebounds at minSpeed and count the
+//  captures
+void splitImpacts
+(
+    const std::vector<Measurement>& data,
+    const ImpactFitSettings& s,
+    std::vector<Measurement>& fast,
+    std::vector<Measurement>& slow,
+    int& captured
+)
+{
+    captured = 0;
+    for (const Measurement& m : data)
+    {
+        const std::string where = " (line " + std::to_string(m.line) + ")";
+        requirePositive(("diameter" + where).c_str(), m.d);
+        requirePositive(("speedIn" + where).c_str(), m.speedIn);
+        requireNonNegative(("speedOut" + where).c_str(), m.speedOut);
+        if (m.speedOut > m.speedIn)
+        {
+            throw InputError
+            (
+                "speedOut" + where,
+                toText(m.speedOut),
+                "a rebound cannot be faster than its impact, speedIn = "
+              + toText(m.speedIn)
+            );
+        }
+        if (m.speedOut == 0)
+        {
+            ++captured;
+        }
+        else
+        {
+            (m.speedIn > s.minSpeed ? fast : slow).push_back(m);
+        }
+    }
+    if (captured == int(data.size()))
+    {
+        throw InputError
+        (
+            "speedOut",
+            "0",
+            "all " + std::to_string(data.size()) + " impacts are captures:"
+            " there is no rebound to fit"
+        );
+    }
+    requirePoints
+    (
+        fast.size(), s.restitutionType == "powerLaw" ? 2 : 1,
+        "restitution, impacts faster than minSpeed", s.minSpeed
+    );
+    requirePoints
+    (
+        slow.size(), s.adhesionType == "powerLaw" ? 2 : 1,
+        "adhesion, impacts at or below minSpeed", s.minSpeed
+    );
+}
+
 } // End anonymous namespace
 
 
@@ -220,195 +349,56 @@ ImpactFitResult fitImpacts
 
     ImpactFitResult result;
     std::vector<Measurement> fast, slow;
-    for (const Measurement& m : data)
-    {
-        const std::string where = " (line " + std::to_string(m.line) + ")";
-        requirePositive(("diameter" + where).c_str(), m.d);
-        requirePositive(("speedIn" + where).c_str(), m.speedIn);
-        requireNonNegative(("speedOut" + where).c_str(), m.speedOut);
-        if (m.speedOut > m.speedIn)
-        {
-            throw InputError
-            (
-                "speedOut" + where,
-                toText(m.speedOut),
-                "a rebound cannot be faster than its impact, speedIn = "
-              + toText(m.speedIn)
-            );
-        }
-        if (m.speedOut == 0)
-        {
-            ++result.captured;
-        }
-        else
-        {
-            (m.speedIn > s.minSpeed ? fast : slow).push_back(m);
-        }
-    }
-    if (result.captured == int(data.size()))
-    {
-        throw InputError
-        (
-            "speedOut",
-            "0",
-            "all " + std::to_string(data.size()) + " impacts are captures:"
-            " there is no rebound to fit"
-        );
-    }
-    const int restitutionParameters = s.restitutionType == "powerLaw" ? 2 : 1;
-    const int adhesionParameters = s.adhesionType == "powerLaw" ? 2 : 1;
-    requirePoints
-    (
-        fast.size(), restitutionParameters,
-        "restitution, impacts faster than minSpeed", s.minSpeed
-    );
-    requirePoints
-    (
-        slow.size(), adhesionParameters,
-        "adhesion, impacts at or below minSpeed", s.minSpeed
-    );
+    splitImpacts(data, s, fast, slow, result.captured);
 
-    // Current laws; adhesion none until first fitted
-    VectorXd restitutionTheta
-        = s.restitutionType == "powerLaw" ? VectorXd(2) : VectorXd(1);
+    const VectorXd fastRatios = measuredRatios(fast);
+    VectorXd slowSpeeds(slow.size());
+    for (std::size_t i = 0; i < slow.size(); ++i)
     {
-        // Start from the mean ratio at the median speed
-        std::vector<double> ratios;
-        for (const Measurement& m : fast) ratios.push_back(m.speedOut/m.speedIn);
-        std::sort(ratios.begin(), ratios.end());
-        const double R = std::clamp(ratios[ratios.size()/2], 0.05, 0.99);
-        if (restitutionTheta.size() == 2)
-        {
-            const double v = fast[fast.size()/2].speedIn;
-            restitutionTheta << std::log(R*std::pow(v, 0.7)/(1 - R)), 0.7;
-        }
-        else
-        {
-            restitutionTheta << R;
-        }
+        slowSpeeds(i) = slow[i].speedIn;
     }
-    const auto restitutionLaw = [&](const VectorXd& t)
-    {
-        return
-            t.size() == 2
-          ? RestitutionLaw::powerLaw(std::exp(t(0)), t(1))
-          : RestitutionLaw::constant(std::clamp(t(0), 0.0, 1.0));
-    };
-    AdhesionLaw adhesion = AdhesionLaw::none();
+
+    // Alternating passes (one without refine): the restitution law from the
+    // fast impacts with the adhesion found so far (none at first), then the
+    // adhesion law from the gamma of the slow ones under that restitution
+    VectorXd restitutionTheta = initialRestitution(fast, s.restitutionType);
     VectorXd adhesionTheta;
-
     LeastSquares restitutionFit, adhesionFit;
     VectorXd previous;
-    const int passes = s.refine ? 30 : 1;
-    for (int pass = 0; pass < passes; ++pass)
+    for (int pass = 0; pass < (s.refine ? 30 : 1); ++pass)
     {
         result.iterations = pass + 1;
 
-        // 1. Restitution from the fast impacts, with the current adhesion
-        VectorXd y(fast.size());
-        for (std::size_t i = 0; i < fast.size(); ++i)
-        {
-            y(i) = fast[i].speedOut/fast[i].speedIn;
-        }
-        const auto ratioModel = [&](const VectorXd& t)
-        {
-            VectorXd ratio(fast.size());
-            if (t.size() == 2 && !(std::abs(t(0)) < 700 && std::abs(t(1)) < 50))
+        restitutionFit = levenbergMarquardt
+        (
+            [&](const VectorXd& t)
             {
-                return VectorXd(VectorXd::Constant(fast.size(), HUGE_VAL));
-            }
-            try
-            {
-                const ImpactModel model
-                (
-                    s.particle, s.wall, restitutionLaw(t), adhesion,
-                    FrictionLaw::sticking(), -1, 0
-                );
-                for (std::size_t i = 0; i < fast.size(); ++i)
-                {
-                    const Particle p{fast[i].d, s.rho};
-                    ratio(i) =
-                        model.impact(p, fast[i].speedIn, 0).unOut
-                       /fast[i].speedIn;
-                }
-            }
-            catch (const InputError&)
-            {
-                // A trial step outside the law's range (p < 0): rejected
-                ratio.setConstant(HUGE_VAL);
-            }
-            return ratio;
-        };
-        restitutionFit = levenbergMarquardt(ratioModel, y, restitutionTheta);
+                return modelRatios(fast, t, adhesionTheta, s);
+            },
+            fastRatios,
+            restitutionTheta
+        );
         requireDetermined(restitutionFit, "restitution", s.restitutionType);
         restitutionTheta = restitutionFit.theta;
-        result.restitution.correlation = pearson(y, restitutionFit.fitted);
-        result.restitution.points = fast.size();
+        result.restitution.correlation =
+            pearson(fastRatios, restitutionFit.fitted);
 
-        // 2. gamma of each slow rebounding impact (Eqs. 18, 22), then its law
-        const ImpactModel measuring
-        (
-            s.particle, s.wall, restitutionLaw(restitutionTheta),
-            AdhesionLaw::none(), FrictionLaw::sticking(), -1, 0
-        );
-        result.surfaceEnergies.clear();
-        VectorXd un(slow.size()), gamma(slow.size());
-        for (std::size_t i = 0; i < slow.size(); ++i)
-        {
-            un(i) = slow[i].speedIn;
-            gamma(i) = measuring.measuredAdhesion
-            (
-                Particle{slow[i].d, s.rho}, slow[i].speedIn, slow[i].speedOut
-            ).gamma;
-            result.surfaceEnergies.push_back({un(i), gamma(i)});
-        }
+        const VectorXd gamma =
+            measuredSurfaceEnergies(slow, restitutionTheta, s);
         if (adhesionTheta.size() == 0)
         {
-            // Start from a log-log line through the positive values
-            double sx = 0, sy = 0, sxx = 0, sxy = 0;
-            int count = 0;
-            for (int i = 0; i < gamma.size(); ++i)
-            {
-                if (gamma(i) <= 0) continue;
-                const double x = std::log(un(i)), yy = std::log(gamma(i));
-                sx += x; sy += yy; sxx += x*x; sxy += x*yy; ++count;
-            }
-            const double slope =
-                count > 1 && count*sxx - sx*sx > 0
-              ? (count*sxy - sx*sy)/(count*sxx - sx*sx) : 0.5;
-            const double intercept = count ? (sy - slope*sx)/count : -1;
-            if (s.adhesionType == "powerLaw")
-            {
-                adhesionTheta.resize(2);
-                adhesionTheta << intercept, slope;
-            }
-            else
-            {
-                adhesionTheta = VectorXd::Constant(1, std::max(gamma.mean(), 0.0));
-            }
+            adhesionTheta = initialAdhesion(slowSpeeds, gamma, s.adhesionType);
         }
-        const auto gammaModel = [&](const VectorXd& t)
-        {
-            if (t.size() == 2)
-            {
-                return VectorXd
-                (
-                    std::exp(t(0))*un.array().pow(t(1))
-                );
-            }
-            return VectorXd(VectorXd::Constant(un.size(), t(0)));
-        };
-        adhesionFit = levenbergMarquardt(gammaModel, gamma, adhesionTheta);
+        adhesionFit = levenbergMarquardt
+        (
+            [&](const VectorXd& t) { return lawSurfaceEnergies(t, slowSpeeds); },
+            gamma,
+            adhesionTheta
+        );
         requireDetermined(adhesionFit, "adhesion", s.adhesionType);
         adhesionTheta = adhesionFit.theta;
         result.adhesion.correlation = pearson(gamma, adhesionFit.fitted);
-        result.adhesion.points = slow.size();
-        adhesion =
-            s.adhesionType == "powerLaw"
-          ? AdhesionLaw::powerLaw(std::exp(adhesionTheta(0)), std::max(adhesionTheta(1), 0.0))
-          : AdhesionLaw::constant(std::max(adhesionTheta(0), 0.0));
 
-        // 3. Settled?
         VectorXd all(restitutionTheta.size() + adhesionTheta.size());
         all << restitutionTheta, adhesionTheta;
         if
@@ -421,58 +411,28 @@ ImpactFitResult fitImpacts
         }
         previous = all;
     }
+    result.restitution.points = fast.size();
+    result.adhesion.points = slow.size();
 
-    // 4. Joint fit of both laws to the rebound ratio of every rebounding
-    //    impact, from the alternating estimate: the least-squares estimate
-    //    proper, with standard errors from the joint covariance
+    // Joint fit of both laws to the rebound ratio of every rebounding
+    // impact, from the alternating estimate: the least-squares estimate
+    // proper, with standard errors from the joint covariance
     if (s.refine)
     {
         std::vector<Measurement> rebounds(fast);
         rebounds.insert(rebounds.end(), slow.begin(), slow.end());
-        VectorXd y(rebounds.size());
-        for (std::size_t i = 0; i < rebounds.size(); ++i)
-        {
-            y(i) = rebounds[i].speedOut/rebounds[i].speedIn;
-        }
         const int nr = restitutionTheta.size(), na = adhesionTheta.size();
-        const auto adhesionLaw = [&](const VectorXd& t)
-        {
-            return
-                na == 2
-              ? AdhesionLaw::powerLaw(std::exp(t(nr)), std::max(t(nr + 1), 0.0))
-              : AdhesionLaw::constant(std::max(t(nr), 0.0));
-        };
-        const auto jointModel = [&](const VectorXd& t)
-        {
-            if (nr == 2 && !(std::abs(t(0)) < 700 && std::abs(t(1)) < 50))
-            {
-                return VectorXd(VectorXd::Constant(rebounds.size(), HUGE_VAL));
-            }
-            VectorXd ratio(rebounds.size());
-            try
-            {
-                const ImpactModel model
-                (
-                    s.particle, s.wall, restitutionLaw(t.head(nr)),
-                    adhesionLaw(t), FrictionLaw::sticking(), -1, 0
-                );
-                for (std::size_t i = 0; i < rebounds.size(); ++i)
-                {
-                    ratio(i) = model.impact
-                    (
-                        Particle{rebounds[i].d, s.rho}, rebounds[i].speedIn, 0
-                    ).unOut/rebounds[i].speedIn;
-                }
-            }
-            catch (const InputError&)
-            {
-                ratio.setConstant(HUGE_VAL);
-            }
-            return ratio;
-        };
         VectorXd theta(nr + na);
         theta << restitutionTheta, adhesionTheta;
-        const LeastSquares joint = levenbergMarquardt(jointModel, y, theta);
+        const LeastSquares joint = levenbergMarquardt
+        (
+            [&](const VectorXd& t)
+            {
+                return modelRatios(rebounds, t.head(nr), t.tail(na), s);
+            },
+            measuredRatios(rebounds),
+            theta
+        );
         requireDetermined
         (
             joint, "restitution", s.restitutionType + " with adhesion "
@@ -485,28 +445,13 @@ ImpactFitResult fitImpacts
 
         // Correlations as the paper reports them: rebound ratio of the fast
         // impacts, and gamma recovered from the slow ones against the law
-        const VectorXd fitted = joint.fitted;
         result.restitution.correlation =
-            pearson(y.head(fast.size()), fitted.head(fast.size()));
-        const ImpactModel measuring
+            pearson(fastRatios, joint.fitted.head(fast.size()));
+        result.adhesion.correlation = pearson
         (
-            s.particle, s.wall, restitutionLaw(restitutionTheta),
-            AdhesionLaw::none(), FrictionLaw::sticking(), -1, 0
+            measuredSurfaceEnergies(slow, restitutionTheta, s),
+            lawSurfaceEnergies(adhesionTheta, slowSpeeds)
         );
-        const AdhesionLaw law = adhesionLaw(joint.theta);
-        VectorXd gamma(slow.size()), gammaFitted(slow.size());
-        result.surfaceEnergies.clear();
-        for (std::size_t i = 0; i < slow.size(); ++i)
-        {
-            const Particle p{slow[i].d, s.rho};
-            gamma(i) = measuring.measuredAdhesion
-            (
-                p, slow[i].speedIn, slow[i].speedOut
-            ).gamma;
-            gammaFitted(i) = law(slow[i].speedIn, 1, p.radius()).gamma;
-            result.surfaceEnergies.push_back({slow[i].speedIn, gamma(i)});
-        }
-        result.adhesion.correlation = pearson(gamma, gammaFitted);
     }
 
     report(result.restitution, s.restitutionType, {"k", "p"}, {"R"},

@@ -154,3 +154,61 @@ TEST(ImpactFit, DegenerateDataGiveClearErrors)
     s.adhesionType = "glue";
     EXPECT_EQ(keywordOf(synthetic(paperModel(), 0), s), "adhesion");
 }
+
+
+TEST(ImpactFit, StandardErrorsOfConstantLawsAreThoseOfTheMean)
+{
+    // With constant laws and the paper's single pass, R is fitted to the
+    // fast rebound ratios without adhesion, and gamma to the values that
+    // Eq. 18 gives for the slow rebounds: least squares on a constant is the
+    // mean, and its standard error is the sample standard deviation (the
+    // n - 1 divisor) over sqrt(n)
+    const std::vector<Measurement> data
+    {
+        {4.9e-6, 20, 16.0, 2}, {4.9e-6, 30, 24.6, 3},
+        {4.9e-6, 40, 31.2, 4}, {4.9e-6, 50, 41.0, 5},
+        {4.9e-6, 2, 1.40, 6}, {4.9e-6, 3, 2.25, 7}, {4.9e-6, 4, 3.05, 8}
+    };
+    ImpactFitSettings s = settings();
+    s.restitutionType = "constant";
+    s.adhesionType = "constant";
+    s.refine = false;
+    const ImpactFitResult fit = fitImpacts(data, s);
+
+    const auto meanAndError = [](const std::vector<double>& x)
+    {
+        double mean = 0;
+        for (const double v : x) mean += v/x.size();
+        double ss = 0;
+        for (const double v : x) ss += (v - mean)*(v - mean);
+        return std::pair<double, double>
+        {
+            mean, std::sqrt(ss/(x.size() - 1))/std::sqrt(double(x.size()))
+        };
+    };
+
+    const auto [R, RError] = meanAndError({0.8, 0.82, 0.78, 0.82});
+    EXPECT_NEAR(fit.restitution.values[0], R, 1e-8);
+    EXPECT_NEAR(fit.restitution.standardErrors[0], RError, 1e-6*RError);
+
+    // gamma of each slow rebound, Eqs. 18 and 22, with that R
+    const ImpactModel measuring
+    (
+        fluorescein, molybdenum, RestitutionLaw::constant(R),
+        AdhesionLaw::none(), FrictionLaw::sticking(), -1, 0
+    );
+    std::vector<double> gamma;
+    for (std::size_t i = 4; i < data.size(); ++i)
+    {
+        gamma.push_back
+        (
+            measuring.measuredAdhesion
+            (
+                Particle{data[i].d, 1350}, data[i].speedIn, data[i].speedOut
+            ).gamma
+        );
+    }
+    const auto [g, gError] = meanAndError(gamma);
+    EXPECT_NEAR(fit.adhesion.values[0], g, 1e-8*g);
+    EXPECT_NEAR(fit.adhesion.standardErrors[0], gError, 1e-6*gError);
+}

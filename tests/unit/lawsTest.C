@@ -111,7 +111,9 @@ TEST(Selection, ByNameWithKeywords)
     (
         "powerLaw", MapParameters{{"k", 45.3}, {"p", 0.718}}
     );
-    EXPECT_EQ(r.kind(), RestitutionLaw::Kind::powerLaw);
+    ASSERT_TRUE(r.as<RestitutionLaw::PowerLaw>());
+    EXPECT_EQ(r.as<RestitutionLaw::PowerLaw>()->k, 45.3);
+    EXPECT_EQ(r.as<RestitutionLaw::PowerLaw>()->p, 0.718);
     EXPECT_EQ(r.typeName(), "powerLaw");
     EXPECT_EQ(r.describe(), "type powerLaw; k 45.3; p 0.718;");
 
@@ -131,15 +133,14 @@ TEST(Selection, ByNameWithKeywords)
         "constant"
     );
     EXPECT_EQ(AdhesionLaw::select("none", MapParameters{}).typeName(), "none");
-    EXPECT_EQ
+    const FrictionLaw coulomb =
+        FrictionLaw::select("coulomb", MapParameters{{"mu", 0.3}});
+    ASSERT_TRUE(coulomb.as<FrictionLaw::Coulomb>());
+    EXPECT_EQ(coulomb.as<FrictionLaw::Coulomb>()->mu, 0.3);
+    EXPECT_TRUE
     (
-        FrictionLaw::select("coulomb", MapParameters{{"mu", 0.3}}).coefficient(),
-        0.3
-    );
-    EXPECT_EQ
-    (
-        FrictionLaw::select("sticking", MapParameters{}).kind(),
-        FrictionLaw::Kind::sticking
+        FrictionLaw::select("sticking", MapParameters{})
+            .as<FrictionLaw::Sticking>()
     );
 
     const std::vector<std::string> restitutionNames

@@ -228,3 +228,19 @@ TEST(Limits, ExtremeSpeedsStayFinite)
         }
     }
 }
+
+
+TEST(Limits, CaptureReportsTheIncidentImpulseRatio)
+{
+    // A captured particle loses all its momentum to the wall: P_n = m un,
+    // P_t = m ut, so the impulse ratio is ut/un whatever the laws
+    const ImpactModel model = paperModel();
+    const Particle sphere = fluoresceinSphere(4.9e-6);
+    const double un = 0.2, ut = 0.15;
+    const ImpactResult r = model.impact(sphere, un, ut);
+    ASSERT_TRUE(r.captured());
+    const double m = sphere.mass();
+    EXPECT_NEAR(r.normalImpulse, m*un, 1e-15*m*un);
+    EXPECT_NEAR(r.tangentialImpulse, m*ut, 1e-15*m*ut);
+    EXPECT_NEAR(r.impulseRatio, ut/un, 1e-15);
+}

@@ -141,3 +141,21 @@ TEST(PaperTable1, ForceReviewOrdering)
         1e-12*negative.image
     );
 }
+
+
+TEST(PaperTable1, CapillaryForceEq30)
+{
+    // Eq. 30 (after Hinds): F_cap = [3.75e-6 + 3.38e-8 %RH] r, r in m
+    const HertzContact h = paperModel().hertz(sphere, vn);
+    const double r = sphere.radius();
+    for (const double humidity : {0.0, 50.0, 100.0})
+    {
+        ForceReviewInputs in;
+        in.relativeHumidity = humidity;
+        const ContactForces f = contactForces(sphere, h.contactRadius, in);
+        EXPECT_NEAR
+        (
+            f.capillary, (3.75e-6 + 3.38e-8*humidity)*r, 1e-15*f.capillary
+        ) << "RH " << humidity << " %";
+    }
+}
