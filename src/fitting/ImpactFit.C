@@ -461,4 +461,25 @@ ImpactFitResult fitImpacts
     return result;
 }
 
+ImpactModel fittedModel
+(
+    const ImpactFitResult& fit,
+    const ImpactFitSettings& s
+)
+{
+    // The fits' parameters: the first coefficient of a power law by its
+    // logarithm
+    const auto theta = [](const LawFit& law)
+    {
+        VectorXd t = Eigen::Map<const VectorXd>(law.values.data(), law.values.size());
+        if (law.type == "powerLaw") t(0) = std::log(t(0));
+        return t;
+    };
+    return ImpactModel
+    (
+        s.particle, s.wall, restitutionLaw(theta(fit.restitution)),
+        adhesionLaw(theta(fit.adhesion)), FrictionLaw::sticking(), -1, 0
+    );
+}
+
 } // End namespace brachDunn

@@ -77,9 +77,22 @@ std::string Foam::checkedInput::entryText(const entry& e)
     }
     OStringStream os;
     const ITstream& tokens = e.stream();
+    const auto isPunctuation = [](const token& t, const char c)
+    {
+        return t.isPunctuation() && t.pToken() == c;
+    };
     forAll(tokens, i)
     {
-        os << (i ? " " : "");
+        // Spaced as written: (a b), not ( a b )
+        if
+        (
+            i
+         && !isPunctuation(tokens[i - 1], token::BEGIN_LIST)
+         && !isPunctuation(tokens[i], token::END_LIST)
+        )
+        {
+            os << ' ';
+        }
         if (tokens[i].isNumber())
         {
             os << brachDunn::toText(tokens[i].number()).c_str();
@@ -143,6 +156,49 @@ Foam::scalar Foam::checkedInput::readNumber
 {
     const entry* e = find(dict, keyword);
     return e ? numberOf(dict, *e) : deflt;
+}
+
+
+Foam::scalarList Foam::checkedInput::readNumbers
+(
+    const dictionary& dict,
+    const word& keyword
+)
+{
+    scalarList values;
+    const entry* e = find(dict, keyword);
+    if (!e)
+    {
+        return values;
+    }
+    const ITstream& tokens = tokensOf(dict, *e, "a list of numbers");
+    const auto isPunctuation = [](const token& t, const char c)
+    {
+        return t.isPunctuation() && t.pToken() == c;
+    };
+    // (a b c), or with OpenFOAM's size prefix: N(a b c)
+    const label first = tokens.size() && tokens[0].isLabel() ? 1 : 0;
+    bool good =
+        tokens.size() >= first + 2
+     && isPunctuation(tokens[first], token::BEGIN_LIST)
+     && isPunctuation(tokens[tokens.size() - 1], token::END_LIST);
+    for (label i = first + 1; good && i < tokens.size() - 1; ++i)
+    {
+        good = tokens[i].isNumber() && std::isfinite(tokens[i].number());
+        if (good)
+        {
+            values.append(tokens[i].number());
+        }
+    }
+    if (!good || (first && tokens[0].labelToken() != values.size()))
+    {
+        fail
+        (
+            dict, keyword, entryText(*e),
+            "must be a list of finite numbers such as (1e-6 2.5e-6)"
+        );
+    }
+    return values;
 }
 
 

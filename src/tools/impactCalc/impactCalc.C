@@ -22,14 +22,17 @@ Usage
     0 when never captured, inf when captured at every speed).
 
     Options:
-      -dict FILE          cloud properties (default constant/kinematicCloudProperties)
-      -patch NAME         the patch whose entry applies
+      -dict FILE          cloud properties (default: the release's, in constant/:
+                          kinematicCloudProperties, or the Foundation's
+                          cloudProperties)
+      -patch NAME         the patch whose entry applies (matched as the
+                          solver matches it, on the case's mesh when it has one)
       -rho VALUE          particle density [kg/m^3] (default constantProperties rho0)
       -diameters "(..)"   [m]
       -speeds "(..)"      total incoming speeds [m/s]
       -angles "(..)"      [deg from the normal] (default (0))
       -critical, -criticalMethod consistent|paper
-      -diagnostics        one impact (first diameter, speed and angle) in detail
+      -diagnostics        one impact (one diameter, speed and angle) in detail
       -measured VALUE     with -diagnostics: the measured rebound normal speed,
                           giving W_A from Eq. 18 as the paper's Table 1 does
       -lifshitz, -separation, -humidity, -charge, -potential: force review inputs
@@ -40,12 +43,9 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
-#include "cloudPatchModel.H"
+#include "caseWallModel.H"
+#include "diagnostics.H"
 #include "gnuplot.H"
-#include "ContactForces.H"
-#include "OFstream.H"
-#include "OSspecific.H"
-#include "scalarList.H"
 #include "mathematicalConstants.H"
 
 #include <fstream>
@@ -90,114 +90,124 @@ scalarList listOption
 }
 
 
-//- Degrees to radians
+//- The one value a list option may hold (-diagnostics)
+scalar single(const argList& args, const word& name, const scalarList& values)
+{
+    if (values.size() != 1)
+    {
+        FatalErrorInFunction
+            << "Option -" << name << " " << tools::text(args, name).c_str()
+            << ": -diagnostics takes one value" << nl << exit(FatalError);
+    }
+    return values[0];
+}
+
+
 inline scalar radians(const scalar degrees)
 {
     return degrees*constant::mathematical::pi/180;
 }
 
 
-//- Run a core call, turning its input errors into fatal errors
-template<class Call>
-auto coreCall(const Call& call) -> decltype(call())
-{
-    try
-    {
-        return call();
-    }
-    catch (const brachDunn::InputError& err)
-    {
-        FatalErrorInFunction << err.what() << nl << exit(FatalError);
-        throw;
-    }
-}
-
-
-//- One impact of any patch type, in the core's result form
-brachDunn::ImpactResult impactOn
+//- One row per diameter, angle and speed: the entry's impact as the solver
+//  computes it, a particle moving at (ut, 0, -un) onto a floor
+void sweep
 (
+    std::ostream& os,
     const wallInteractionEntry& entry,
-    const brachDunn::Particle& particle,
-    scalar un,
-    scalar ut
+    const scalar rho,
+    const scalarList& diameters,
+    const scalarList& speeds,
+    const scalarList& angles,
+    std::vector<tools::plotSeries>& series
 )
 {
-    using interaction = wallInteractionEntry::interaction;
-    if (entry.type() == interaction::adhesive)
+    const vector nw(0, 0, -1);
+    os  << "diameter,speed,angle,un,ut,R,gamma,WA,captured,unOut,utOut,"
+        << "energyLoss\n";
+    for (const scalar d : diameters)
     {
-        return coreCall([&]{ return entry.model().impact(particle, un, ut); });
-    }
-
-    brachDunn::ImpactResult r;
-    r.un = un;
-    r.ut = ut;
-    const scalar m = particle.mass();
-    const scalar kinetic = 0.5*m*(un*un + ut*ut);
-    if (entry.type() == interaction::stick)
-    {
-        r.outcome = brachDunn::Outcome::captured;
-        r.energyLoss = kinetic;
-        return r;
-    }
-    // rebound: standardWallInteraction's U -= (1 + e) Un n; U -= mu Ut
-    r.outcome = brachDunn::Outcome::rebound;
-    r.R = entry.e();
-    r.unOut = entry.e()*un;
-    r.utOut = (1 - entry.mu())*ut;
-    r.energyLoss =
-        kinetic - 0.5*m*(r.unOut*r.unOut + r.utOut*r.utOut);
-    return r;
-}
-
-
-//- A curve of a plot
-struct Series
-{
-    std::string title;
-    std::vector<std::pair<double, double>> points;
-};
-
-
-//- Draw the series with gnuplot into png (data and script beside it)
-void plot
-(
-    const fileName& png,
-    const std::vector<Series>& series,
-    const std::string& xlabel,
-    const std::string& ylabel,
-    bool logY
-)
-{
-    const fileName data = png.lessExt() + ".dat";
-    {
-        std::ofstream out(data);
-        out << std::setprecision(10);
-        for (const Series& s : series)
+        for (const scalar angle : angles)
         {
-            out << "# " << s.title << '\n';
-            for (const auto& [x, y] : s.points)
+            std::ostringstream title;
+            title << d << " m, " << angle << " deg";
+            series.push_back({title.str(), "linespoints", {}});
+            for (const scalar v : speeds)
             {
-                out << x << ' ' << y << '\n';
+                const vector U
+                (
+                    v*std::sin(radians(angle)), 0, -v*std::cos(radians(angle))
+                );
+                const wallImpact r = tools::coreCall
+                (
+                    [&]{ return entry.impact(d, rho, U, nw); },
+                    {{"d", "diameters"}, {"rho", "rho"}}
+                );
+                const bool captured = r.outcome == wallImpact::fate::capture;
+                os  << d << ',' << v << ',' << angle << ',' << r.un << ','
+                    << r.ut << ',' << r.R << ',' << r.gamma << ',' << r.WA
+                    << ',' << (captured ? 1 : 0) << ',' << r.unOut << ','
+                    << r.utOut << ',' << r.energyLoss << '\n';
+                series.back().points.push_back
+                (
+                    {v, captured ? 0 : r.unOut/r.un}
+                );
             }
-            out << "\n\n";
         }
     }
-    std::ostringstream gp;
-    gp  << "set key outside right\n"
-        << "set grid\n"
-        << "set logscale x\n"
-        << (logY ? "set logscale y\n" : "set yrange [0:*]\n")
-        << "set xlabel '" << xlabel << "'\n"
-        << "set ylabel '" << ylabel << "'\n"
-        << "plot";
-    for (std::size_t i = 0; i < series.size(); ++i)
+}
+
+
+//- One row per diameter and angle: the critical (capture) speed
+void criticalSpeeds
+(
+    std::ostream& os,
+    const brachDunn::ImpactModel& model,
+    const scalar rho,
+    const scalarList& diameters,
+    const scalarList& angles,
+    const word& method,
+    std::vector<tools::plotSeries>& series
+)
+{
+    os << "diameter,angle,criticalSpeed,criticalNormalSpeed\n";
+    for (const scalar angle : angles)
     {
-        gp  << (i ? ", \\\n    " : " ") << "'" << data.c_str() << "' index "
-            << i << " using 1:2 with linespoints title '" << series[i].title
-            << "'";
+        std::ostringstream title;
+        title << angle << " deg";
+        series.push_back({title.str(), "linespoints", {}});
     }
-    gp << '\n';
-    tools::gnuplot(png, gp.str());
+    for (const scalar d : diameters)
+    {
+        forAll(angles, anglei)
+        {
+            const brachDunn::CriticalSpeed c = tools::coreCall
+            (
+                [&]
+                {
+                    return model.criticalSpeed
+                    (
+                        brachDunn::Particle{d, rho},
+                        std::tan(radians(angles[anglei])),
+                        method == "paper"
+                      ? brachDunn::CriticalMethod::paper
+                      : brachDunn::CriticalMethod::consistent
+                    );
+                },
+                {{"d", "diameters"}, {"rho", "rho"}}
+            );
+            os << d << ',' << angles[anglei] << ',';
+            if (c.status == brachDunn::CriticalSpeed::Status::alwaysCaptured)
+            {
+                os << "inf,inf\n";
+            }
+            else
+            {
+                os << c.speed << ',' << c.normalSpeed << '\n';
+                series[anglei].points.push_back({d, c.speed});
+            }
+        }
+    }
 }
 
 } // End anonymous namespace
@@ -236,16 +246,9 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
 
-
-    const fileName propsFile = tools::cloudPropertiesFile(args);
-    IFstream propsStream(propsFile);
-    const dictionary cloudProperties(propsStream);
-    const dictionary& coeffs = tools::adhesiveCoeffs(cloudProperties);
-    const brachDunn::ElasticMaterial particleMaterial =
-        tools::particleMaterial(cloudProperties, coeffs);
     const word patchName(tools::text(args, "patch"));
-    const wallInteractionEntry entry =
-        tools::patchEntry(coeffs, patchName, particleMaterial);
+    const tools::caseWallModel wallModel(args, patchName);
+    const wallInteractionEntry& entry = wallModel.entry();
     if
     (
         entry.type() == wallInteractionEntry::interaction::escape
@@ -256,22 +259,45 @@ int main(int argc, char *argv[])
             << "Patch " << patchName << " is of type " << entry.typeName()
             << ": there is no impact to compute" << nl << exit(FatalError);
     }
-    const scalar rho = tools::particleDensity(args, cloudProperties);
+    const scalar rho = wallModel.particleDensity(args);
 
-    const scalarList diameters =
-        listOption(args, "diameters", scalarList());
-    const scalarList angles =
-        listOption(args, "angles", scalarList(1, Zero));
     const bool critical = tools::found(args, "critical");
+    const bool diagnostics = tools::found(args, "diagnostics");
+    for (const char* option : {"measured", "lifshitz", "separation", "humidity", "charge", "potential"})
+    {
+        if (tools::found(args, option) && !diagnostics)
+        {
+            FatalErrorInFunction
+                << "Option -" << option << " belongs to -diagnostics" << nl
+                << exit(FatalError);
+        }
+    }
+    if (critical && (diagnostics || tools::found(args, "speeds")))
+    {
+        FatalErrorInFunction
+            << "Option -critical takes -diameters and -angles, not"
+            << (diagnostics ? " -diagnostics" : " -speeds") << nl
+            << exit(FatalError);
+    }
+    if (tools::found(args, "criticalMethod") && !critical)
+    {
+        FatalErrorInFunction
+            << "Option -criticalMethod belongs to -critical" << nl
+            << exit(FatalError);
+    }
+
+    const scalarList diameters = listOption(args, "diameters", scalarList());
+    const scalarList angles = listOption(args, "angles", scalarList(1, Zero));
 
     std::unique_ptr<std::ofstream> file;
     if (tools::found(args, "output"))
     {
-        file.reset(new std::ofstream(tools::text(args, "output")));
+        file = std::make_unique<std::ofstream>(tools::text(args, "output"));
         if (!file->good())
         {
-            FatalErrorInFunction << "Cannot write " << tools::text(args, "output").c_str() << nl
-                << exit(FatalError);
+            FatalErrorInFunction
+                << "Option -output " << tools::text(args, "output").c_str()
+                << ": cannot write this file" << nl << exit(FatalError);
         }
     }
     std::ostream& os = file ? *file : std::cout;
@@ -282,8 +308,8 @@ int main(int argc, char *argv[])
             << ": must be in [1, 17]" << nl << exit(FatalError);
     }
     os << std::setprecision(precision);
-    std::vector<Series> series;
 
+    std::vector<tools::plotSeries> series;
     if (critical)
     {
         if (entry.type() != wallInteractionEntry::interaction::adhesive)
@@ -301,103 +327,47 @@ int main(int argc, char *argv[])
                 << ": valid methods are consistent and paper" << nl
                 << exit(FatalError);
         }
-        os << "diameter,angle,criticalSpeed,criticalNormalSpeed\n";
-        for (const scalar angle : angles)
-        {
-            std::ostringstream title;
-            title << angle << " deg";
-            series.push_back({title.str(), {}});
-        }
-        for (const scalar d : diameters)
-        {
-            forAll(angles, anglei)
-            {
-                const scalar angle = angles[anglei];
-                const brachDunn::CriticalSpeed c = coreCall([&]
-                {
-                    return entry.model().criticalSpeed
-                    (
-                        brachDunn::Particle{d, rho},
-                        std::tan(radians(angle)),
-                        method == "paper"
-                      ? brachDunn::CriticalMethod::paper
-                      : brachDunn::CriticalMethod::consistent
-                    );
-                });
-                os << d << ',' << angle << ',';
-                if (c.status == brachDunn::CriticalSpeed::Status::alwaysCaptured)
-                {
-                    os << "inf,inf\n";
-                }
-                else
-                {
-                    os << c.speed << ',' << c.normalSpeed << '\n';
-                    series[anglei].points.push_back({d, c.speed});
-                }
-            }
-        }
+        criticalSpeeds(os, entry.model(), rho, diameters, angles, method, series);
     }
     else
     {
-        const scalarList speeds =
-            listOption(args, "speeds", scalarList());
-
-        if (tools::found(args, "diagnostics"))
+        const scalarList speeds = listOption(args, "speeds", scalarList());
+        if (diagnostics)
         {
-            #include "diagnostics.H"
+            writeDiagnostics
+            (
+                os, args, patchName, entry, single(args, "diameters", diameters),
+                rho, single(args, "speeds", speeds),
+                tools::found(args, "angles") ? single(args, "angles", angles) : 0
+            );
         }
         else
         {
-            os  << "diameter,speed,angle,un,ut,R,gamma,WA,captured,"
-                << "unOut,utOut,energyLoss\n";
-            for (const scalar d : diameters)
-            {
-                for (const scalar angle : angles)
-                {
-                    std::ostringstream title;
-                    title << d << " m, " << angle << " deg";
-                    series.push_back({title.str(), {}});
-                    for (const scalar v : speeds)
-                    {
-                        const scalar un = v*std::cos(radians(angle));
-                        const scalar ut = v*std::sin(radians(angle));
-                        const brachDunn::ImpactResult r =
-                            impactOn(entry, brachDunn::Particle{d, rho}, un, ut);
-                        os  << d << ',' << v << ',' << angle << ','
-                            << un << ',' << ut << ',' << r.R << ','
-                            << r.gamma << ',' << r.WA << ','
-                            << (r.captured() ? 1 : 0) << ','
-                            << r.unOut << ',' << r.utOut << ','
-                            << r.energyLoss << '\n';
-                        series.back().points.push_back
-                        (
-                            {v, r.captured() ? 0 : r.unOut/un}
-                        );
-                    }
-                }
-            }
+            sweep(os, entry, rho, diameters, speeds, angles, series);
         }
     }
     os.flush();
 
     if (tools::found(args, "plot"))
     {
-        if (critical)
+        if (diagnostics)
         {
-            plot
-            (
-                fileName(tools::text(args, "plot")), series, "particle diameter [m]",
-                "critical speed [m/s]", true
-            );
+            FatalErrorInFunction
+                << "Option -plot: -diagnostics has nothing to plot" << nl
+                << exit(FatalError);
         }
-        else
-        {
-            plot
-            (
-                fileName(tools::text(args, "plot")), series, "incoming speed [m/s]",
-                "rebound ratio Un''/un", false
-            );
-        }
+        tools::plot
+        (
+            fileName(tools::text(args, "plot")),
+            series,
+            critical
+          ? "set key outside right\nset grid\nset logscale x\n"
+            "set logscale y\nset xlabel 'particle diameter [m]'\n"
+            "set ylabel 'critical speed [m/s]'\n"
+          : "set key outside right\nset grid\nset logscale x\n"
+            "set yrange [0:*]\nset xlabel 'incoming speed [m/s]'\n"
+            "set ylabel 'rebound ratio Un''/un'\n"
+        );
     }
 
     return 0;

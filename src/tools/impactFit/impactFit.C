@@ -15,10 +15,12 @@ Usage
 
     Data: lines "diameter,speedIn,speedOut" (m, m/s, m/s; speedOut 0 for a
     captured particle); further columns are ignored, '#' starts a comment, a
-    first line that is not numbers is a header.
+    first line whose first field is not a number is a header; every other
+    field must be a finite number, nothing else.
 
-    Materials, from a case's cloud properties (-dict FILE or the case's
-    constant/kinematicCloudProperties, with -patch NAME) or from options:
+    Materials, from the adhesive entry of a case's cloud properties that
+    applies to -patch NAME (-dict FILE, else the release's default file in
+    constant/; read as impactCalc reads it) or from options:
       -rho VALUE, -particleE VALUE, -particleNu VALUE, -wallE VALUE,
       -wallNu VALUE (options override the dictionary)
 
@@ -32,17 +34,17 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
-#include "cloudPatchModel.H"
+#include "caseWallModel.H"
 #include "gnuplot.H"
 #include "ImpactFit.H"
-#include "OSspecific.H"
 
 #include <fenv.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <memory>
+#include <optional>
 #include <sstream>
 
 using namespace Foam;
@@ -56,8 +58,9 @@ std::vector<brachDunn::Measurement> readImpacts(const fileName& file)
     std::ifstream in(file);
     if (!in.good())
     {
-        FatalErrorInFunction << "Cannot read the data file " << file.c_str() << nl
-            << exit(FatalError);
+        FatalErrorInFunction
+            << "Option -data " << file.c_str() << ": cannot read this file"
+            << nl << exit(FatalError);
     }
     std::vector<brachDunn::Measurement> data;
     std::string text;
@@ -69,23 +72,40 @@ std::vector<brachDunn::Measurement> readImpacts(const fileName& file)
         text = text.substr(0, text.find('#'));
         if (text.find_first_not_of(" \t\r,") == std::string::npos) continue;
 
-        std::replace(text.begin(), text.end(), ',', ' ');
-        std::istringstream fields(text);
-        brachDunn::Measurement m;
-        m.line = line;
-        if (!(fields >> m.d >> m.speedIn >> m.speedOut))
+        // The first three comma-separated fields, each a number and only that
+        std::vector<std::string> fields;
+        std::istringstream columns(text);
+        for (std::string field; fields.size() < 3 && std::getline(columns, field, ',');)
         {
-            // A header: a first line that does not start with a number
-            std::istringstream start(text);
-            double number;
-            if (first && !(start >> number)) { first = false; continue; }
+            const auto begin = field.find_first_not_of(" \t\r");
+            const auto end = field.find_last_not_of(" \t\r");
+            fields.push_back
+            (
+                begin == std::string::npos ? "" : field.substr(begin, end - begin + 1)
+            );
+        }
+        scalar values[3] = {0, 0, 0};
+        bool good = fields.size() == 3;
+        for (std::size_t i = 0; good && i < 3; ++i)
+        {
+            good = tools::parseNumber(fields[i], values[i]);
+        }
+        if (!good)
+        {
+            // A header: a first line whose first field is not a number
+            scalar number = 0;
+            if (first && !tools::parseNumber(fields[0], number))
+            {
+                first = false;
+                continue;
+            }
             FatalErrorInFunction
                 << file.c_str() << " line " << line << ": expected"
-                << " diameter,speedIn,speedOut numbers" << nl
-                << exit(FatalError);
+                << " diameter,speedIn,speedOut, each a finite number, found '"
+                << text.c_str() << "'" << nl << exit(FatalError);
         }
         first = false;
-        data.push_back(m);
+        data.push_back({values[0], values[1], values[2], line});
     }
     if (data.empty())
     {
@@ -96,19 +116,19 @@ std::vector<brachDunn::Measurement> readImpacts(const fileName& file)
 }
 
 
-//- The value of an option, else of the material, else an error
+//- The value of an option, else of the case's material, else an error
 scalar materialValue
 (
     const argList& args,
     const word& option,
-    const scalar* fromDict
+    const std::optional<scalar>& fromCase
 )
 {
     if (tools::found(args, option)) return tools::number(args, option);
-    if (fromDict) return *fromDict;
+    if (fromCase) return *fromCase;
     FatalErrorInFunction
-        << "Option -" << option << " is required (or -dict/-patch giving"
-        << " the materials)" << nl << exit(FatalError);
+        << "Option -" << option << " is required (or -patch, whose entry"
+        << " gives the materials)" << nl << exit(FatalError);
     return 0;
 }
 
@@ -128,6 +148,7 @@ void printFit(std::ostream& os, const brachDunn::LawFit& fit, const char* unit)
 }
 
 
+//- The data and the fitted curves, by diameter
 void plot
 (
     const fileName& png,
@@ -136,31 +157,7 @@ void plot
     const brachDunn::ImpactFitSettings& s
 )
 {
-    const fileName dataFile = png.lessExt() + ".dat";
-    const brachDunn::ImpactModel model
-    (
-        s.particle, s.wall,
-        brachDunn::RestitutionLaw::select
-        (
-            fit.restitution.type,
-            brachDunn::MapParameters
-            (
-                fit.restitution.type == "powerLaw"
-              ? brachDunn::MapParameters
-                {{"k", fit.restitution.values[0]}, {"p", fit.restitution.values[1]}}
-              : brachDunn::MapParameters{{"R", fit.restitution.values[0]}}
-            )
-        ),
-        fit.adhesion.type == "powerLaw"
-      ? brachDunn::AdhesionLaw::powerLaw
-        (
-            fit.adhesion.values[0], std::max(fit.adhesion.values[1], 0.0)
-        )
-      : brachDunn::AdhesionLaw::constant(std::max(fit.adhesion.values[0], 0.0)),
-        brachDunn::FrictionLaw::sticking(), -1, 0
-    );
-
-    // Diameters measured, each a data series and a fitted curve
+    const brachDunn::ImpactModel model = brachDunn::fittedModel(fit, s);
     std::vector<double> diameters;
     for (const auto& m : data)
     {
@@ -169,44 +166,35 @@ void plot
             diameters.push_back(m.d);
         }
     }
-    std::ofstream out(dataFile);
-    out << std::setprecision(8);
-    for (const double d : diameters)
+    std::vector<tools::plotSeries> series;
+    for (std::size_t i = 0; i < diameters.size(); ++i)
     {
+        const double d = diameters[i];
+        std::ostringstream measured, colour;
+        measured << d << " m, measured";
+        colour << " lc " << i + 1;
+        series.push_back({measured.str(), "points pt 7" + colour.str(), {}});
         for (const auto& m : data)
         {
-            if (m.d == d) out << m.speedIn << ' ' << m.speedOut/m.speedIn << '\n';
+            if (m.d == d) series.back().points.push_back({m.speedIn, m.speedOut/m.speedIn});
         }
-        out << "\n\n";
-        for (int i = 0; i <= 200; ++i)
+        series.push_back({"fitted", "lines" + colour.str(), {}});
+        for (int j = 0; j <= 200; ++j)
         {
-            const double v = 0.1*std::pow(2000.0, i/200.0);
+            const double v = 0.1*std::pow(2000.0, j/200.0);
             const auto r = model.impact(brachDunn::Particle{d, s.rho}, v, 0);
-            out << v << ' ' << (r.captured() ? 0 : r.unOut/v) << '\n';
+            series.back().points.push_back({v, r.captured() ? 0 : r.unOut/v});
         }
-        out << "\n\n";
     }
-    out.close();
-
-    std::ostringstream gp;
-    gp  << "set logscale x\nset grid\nset key outside right\n"
+    std::ostringstream settings;
+    settings
+        << "set logscale x\nset grid\nset key outside right\n"
         << "set yrange [0:1.05]\n"
         << "set xlabel 'incoming normal speed [m/s]'\n"
         << "set ylabel 'rebound ratio Un''/un'\n"
         << "set arrow from " << s.minSpeed << ", graph 0 to " << s.minSpeed
-        << ", graph 1 nohead dashtype 2\n"
-        << "plot";
-    for (std::size_t i = 0; i < diameters.size(); ++i)
-    {
-        gp  << (i ? ", \\\n    " : " ")
-            << "'" << dataFile.c_str() << "' index " << 2*i
-            << " using 1:2 with points pt 7 lc " << i + 1 << " title '"
-            << diameters[i] << " m, measured', '" << dataFile.c_str()
-            << "' index " << 2*i + 1 << " using 1:2 with lines lc " << i + 1
-            << " title 'fitted'";
-    }
-    gp << '\n';
-    tools::gnuplot(png, gp.str());
+        << ", graph 1 nohead dashtype 2\n";
+    tools::plot(png, series, settings.str());
 }
 
 } // End anonymous namespace
@@ -244,64 +232,49 @@ int main(int argc, char *argv[])
     const fileName dataFile(tools::text(args, "data"));
     const std::vector<brachDunn::Measurement> data = readImpacts(dataFile);
 
-    // Materials from the dictionary when given, options override
-    brachDunn::ImpactFitSettings s;
-    std::unique_ptr<brachDunn::ElasticMaterial> particleDict, wallDict;
-    std::unique_ptr<scalar> rhoDict;
+    // Materials from the case's adhesive entry when -patch is given;
+    // options override
+    std::optional<brachDunn::ElasticMaterial> particle, wall;
+    std::optional<scalar> rho;
     if (tools::found(args, "patch"))
     {
-        IFstream stream(tools::cloudPropertiesFile(args));
-        const dictionary cloudProperties(stream);
-        const dictionary& coeffs = tools::adhesiveCoeffs(cloudProperties);
-        particleDict.reset(new brachDunn::ElasticMaterial
-        (
-            tools::particleMaterial(cloudProperties, coeffs)
-        ));
-        const wallInteractionEntry entry = tools::patchEntry
-        (
-            coeffs, tools::text(args, "patch"), *particleDict
-        );
+        const word patchName(tools::text(args, "patch"));
+        const tools::caseWallModel wallModel(args, patchName);
+        const wallInteractionEntry& entry = wallModel.entry();
         if (entry.type() != wallInteractionEntry::interaction::adhesive)
         {
             FatalErrorInFunction
-                << "Patch " << tools::text(args, "patch").c_str() << " is of type "
-                << entry.typeName() << ", not adhesive: it has no wall"
-                << " material" << nl << exit(FatalError);
+                << "Patch " << patchName << " is of type " << entry.typeName()
+                << ", not adhesive: it has no wall material" << nl
+                << exit(FatalError);
         }
-        wallDict.reset(new brachDunn::ElasticMaterial(entry.model().wallMaterial()));
-        const dictionary* constProps = checkedInput::findDictionary
-        (
-            cloudProperties, "constantProperties", "{ ... }"
-        );
-        if (constProps && checkedInput::find(*constProps, "rho0"))
-        {
-            rhoDict.reset
-            (
-                new scalar(checkedInput::readNumber(*constProps, "rho0"))
-            );
-        }
+        particle = entry.model().particleMaterial();
+        wall = entry.model().wallMaterial();
+        rho = wallModel.particleDensity(args);
     }
-    s.particle.E = materialValue(args, "particleE", particleDict ? &particleDict->E : nullptr);
-    s.particle.nu = materialValue(args, "particleNu", particleDict ? &particleDict->nu : nullptr);
-    s.wall.E = materialValue(args, "wallE", wallDict ? &wallDict->E : nullptr);
-    s.wall.nu = materialValue(args, "wallNu", wallDict ? &wallDict->nu : nullptr);
-    s.rho = materialValue(args, "rho", rhoDict.get());
+    const auto part = [](const auto& material, scalar brachDunn::ElasticMaterial::*member)
+    {
+        return material ? std::optional<scalar>((*material).*member) : std::nullopt;
+    };
+    brachDunn::ImpactFitSettings s;
+    s.particle.E = materialValue(args, "particleE", part(particle, &brachDunn::ElasticMaterial::E));
+    s.particle.nu = materialValue(args, "particleNu", part(particle, &brachDunn::ElasticMaterial::nu));
+    s.wall.E = materialValue(args, "wallE", part(wall, &brachDunn::ElasticMaterial::E));
+    s.wall.nu = materialValue(args, "wallNu", part(wall, &brachDunn::ElasticMaterial::nu));
+    s.rho = materialValue(args, "rho", rho);
     s.minSpeed = tools::number(args, "minSpeed", 10);
     s.restitutionType = tools::wordOption(args, "restitution", "powerLaw");
     s.adhesionType = tools::wordOption(args, "adhesion", "powerLaw");
     s.refine = !tools::found(args, "noRefine");
 
-    brachDunn::ImpactFitResult fit;
-    try
-    {
-        fit = brachDunn::fitImpacts(data, s);
-    }
-    catch (const brachDunn::InputError& err)
-    {
-        FatalErrorInFunction
-            << "impactFit on " << dataFile.c_str() << ": " << err.what() << nl
-            << exit(FatalError);
-    }
+    const brachDunn::ImpactFitResult fit = tools::coreCall
+    (
+        [&]{ return brachDunn::fitImpacts(data, s); },
+        {
+            {"rho", "rho"}, {"minSpeed", "minSpeed"},
+            {"restitution", "restitution"}, {"adhesion", "adhesion"}
+        }
+    );
 
     std::ostream& os = std::cout;
     os  << "impactFit: " << data.size() << " impacts from " << dataFile.c_str()

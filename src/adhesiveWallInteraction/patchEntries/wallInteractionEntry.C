@@ -111,30 +111,13 @@ brachDunn::ElasticMaterial Foam::readElasticMaterial(const dictionary& dict)
 }
 
 
-const Foam::dictionary* Foam::findParticleDict(const dictionary& coeffs)
-{
-    const dictionary* found = checkedInput::findDictionary
-    (
-        coeffs, "particle", "{ E <Pa>; nu <->; }"
-    );
-    if (found)
-    {
-        checkedInput::requireKnownKeywords
-        (
-            *found, {"E", "nu"}, "the particle's elastic constants"
-        );
-    }
-    return found;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::wallInteractionEntry::wallInteractionEntry
 (
     const keyType& name,
     const dictionary& dict,
-    const brachDunn::ElasticMaterial& particleMaterial
+    const particleMaterial& particle
 )
 :
     name_(name),
@@ -207,13 +190,14 @@ Foam::wallInteractionEntry::wallInteractionEntry
             dict, "minReboundSpeed",
             brachDunn::ImpactModel::defaultMinReboundSpeed
         );
+        const brachDunn::ElasticMaterial particleConstants = particle();
         model_.emplace
         (
             checkedInput::coreCall(dict, [&]
             {
                 return brachDunn::ImpactModel
                 (
-                    particleMaterial, wall, restitution, adhesion, friction,
+                    particleConstants, wall, restitution, adhesion, friction,
                     momentCoeff, minReboundSpeed
                 );
             })
@@ -244,4 +228,100 @@ Foam::string Foam::wallInteractionEntry::describe() const
             << " minReboundSpeed " << m.minReboundSpeed() << ")";
     }
     return os.str();
+}
+
+
+Foam::wallImpact Foam::wallInteractionEntry::impact
+(
+    const scalar d,
+    const scalar rho,
+    const vector& U,
+    const vector& nw,
+    const vector& omega
+) const
+{
+    using fate = wallImpact::fate;
+
+    wallImpact out;
+    const scalar Un = U & nw;
+    const vector Ut = U - Un*nw;
+    out.un = Un;
+    out.ut = mag(Ut);
+
+    switch (type_)
+    {
+        case interaction::escape:
+            out.outcome = fate::escape;
+            break;
+
+        case interaction::stick:
+            out.outcome = fate::capture;
+            break;
+
+        case interaction::rebound:
+        {
+            // standardWallInteraction's rebound: U -= (1 + e) Un n towards
+            // the wall, U -= mu Ut always
+            out.outcome = fate::rebound;
+            out.U = U - mu_*Ut;
+            if (Un > 0)
+            {
+                out.U -= (1 + e_)*Un*nw;
+            }
+            out.omega = omega;
+            out.R = e_;
+            out.unOut = max(-(out.U & nw), scalar(0));
+            out.utOut = (1 - mu_)*out.ut;
+            break;
+        }
+
+        case interaction::adhesive:
+        {
+            const brachDunn::Impact3D impact = model_->impact
+            (
+                brachDunn::Particle{d, rho},
+                {U.x(), U.y(), U.z()},
+                {-nw.x(), -nw.y(), -nw.z()},
+                {omega.x(), omega.y(), omega.z()}
+            );
+            const brachDunn::ImpactResult& r = impact.result;
+            out.un = r.un;
+            out.ut = r.ut;
+            out.R = r.R;
+            out.gamma = r.gamma;
+            out.WA = r.WA;
+            if (r.outcome == brachDunn::Outcome::notApproaching)
+            {
+                out.U = U;
+                out.omega = omega;
+            }
+            else if (r.captured())
+            {
+                out.outcome = fate::capture;
+            }
+            else
+            {
+                out.outcome = fate::rebound;
+                out.U = vector(impact.U.x, impact.U.y, impact.U.z);
+                out.omega =
+                    vector(impact.omega.x, impact.omega.y, impact.omega.z);
+                out.unOut = r.unOut;
+                out.utOut = r.utOut;
+            }
+            break;
+        }
+
+        case interaction::none:
+            FatalErrorInFunction
+                << "Patch entry " << name_ << " has type none: it has no"
+                << " impact" << exit(FatalError);
+            break;
+    }
+
+    if (out.outcome == fate::rebound || out.outcome == fate::capture)
+    {
+        const scalar m = brachDunn::Particle{d, rho}.mass();
+        out.energyLoss = 0.5*m*(magSqr(U) - magSqr(out.U));
+    }
+    return out;
 }

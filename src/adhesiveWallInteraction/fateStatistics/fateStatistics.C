@@ -1,0 +1,357 @@
+#include "fateStatistics.H"
+#include "InputError.H"
+#include "Pstream.H"
+#include "scalarField.H"
+#include "error.H"
+
+#include <limits>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- A number as the shortest text that reads back as the same number
+string text(const scalar value)
+{
+    return brachDunn::toText(value);
+}
+
+
+//- Mean of a particle-weighted sum
+scalar mean(const scalar sum, const scalar particles)
+{
+    return particles > 0 ? sum/particles : 0;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::fateStatistics::dMin(const label sizeClass) const
+{
+    return sizeClass > 0 ? edges_[sizeClass - 1] : 0;
+}
+
+
+Foam::scalar Foam::fateStatistics::dMax(const label sizeClass) const
+{
+    return
+        sizeClass < edges_.size()
+      ? edges_[sizeClass] : std::numeric_limits<scalar>::infinity();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fateStatistics::fateStatistics
+(
+    const wordList& meshPatchNames,
+    const boolList& withStatistics,
+    const labelList& injectorIds,
+    const scalarList& sizeClassEdges
+)
+:
+    patchNames_(),
+    patchIndex_(meshPatchNames.size(), -1),
+    injectorIds_(injectorIds),
+    injectorIndex_(),
+    edges_(sizeClassEdges),
+    run_(),
+    stored_()
+{
+    forAll(meshPatchNames, patchi)
+    {
+        if (withStatistics[patchi])
+        {
+            patchIndex_[patchi] = patchNames_.size();
+            patchNames_.append(meshPatchNames[patchi]);
+        }
+    }
+    forAll(injectorIds_, i)
+    {
+        injectorIndex_[injectorIds_[i]] = i;
+    }
+    run_.setSize(patchNames_.size()*nGroups(), row());
+    stored_ = run_;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::label Foam::fateStatistics::rowOf
+(
+    const label meshPatch,
+    const label injectorId,
+    const scalar d
+) const
+{
+    label injector = 0;
+    if (!injectorIds_.empty())
+    {
+        // A parcel whose identifier is no injector's (OpenFOAM sets it
+        // after the first move) counts under the first injector
+        const auto found = injectorIndex_.find(injectorId);
+        injector = found == injectorIndex_.end() ? 0 : found->second;
+    }
+    label sizeClass = 0;
+    while (sizeClass < edges_.size() && !(d < edges_[sizeClass]))
+    {
+        ++sizeClass;
+    }
+    return rowIndex(patchIndex_[meshPatch], injector, sizeClass);
+}
+
+
+void Foam::fateStatistics::add
+(
+    const label row,
+    const fate outcome,
+    const scalar nParticle,
+    const scalar mass,
+    const scalar speed,
+    const scalar angle
+)
+{
+    sums& s = run_[row][outcome];
+    s.parcels += 1;
+    s.particles += nParticle;
+    s.mass += mass;
+    if (outcome != escape)
+    {
+        s.speed += nParticle*speed;
+        s.angle += nParticle*angle;
+    }
+}
+
+
+Foam::List<Foam::fateStatistics::row> Foam::fateStatistics::totals() const
+{
+    scalarField values(run_.size()*rowSize);
+    label i = 0;
+    for (const row& r : run_)
+    {
+        for (const sums& s : r)
+        {
+            for (const scalar v : {s.parcels, s.particles, s.mass, s.speed, s.angle})
+            {
+                values[i++] = v;
+            }
+        }
+    }
+    reduce(values, sumOp<scalarField>());
+
+    List<row> total(stored_);
+    i = 0;
+    for (row& r : total)
+    {
+        for (sums& s : r)
+        {
+            for (scalar* v : {&s.parcels, &s.particles, &s.mass, &s.speed, &s.angle})
+            {
+                *v += values[i++];
+            }
+        }
+    }
+    return total;
+}
+
+
+void Foam::fateStatistics::store(const List<row>& totals)
+{
+    stored_ = totals;
+    run_ = row();
+}
+
+
+Foam::stringList Foam::fateStatistics::storedText
+(
+    const List<row>& totals,
+    const label patch
+) const
+{
+    stringList values;
+    for (label j = 0; j < nGroups(); ++j)
+    {
+        for (const sums& s : totals[patch*nGroups() + j])
+        {
+            for (const scalar v : {s.parcels, s.particles, s.mass, s.speed, s.angle})
+            {
+                values.append(text(v));
+            }
+        }
+    }
+    return values;
+}
+
+
+void Foam::fateStatistics::restore(const label patch, const stringList& values)
+{
+    if (values.empty())
+    {
+        return;
+    }
+    if (values.size() != nGroups()*rowSize)
+    {
+        FatalErrorInFunction
+            << "The statistics stored for patch " << patchNames_[patch]
+            << " have " << values.size() << " values where "
+            << nGroups()*rowSize << " belong: they were made with other"
+            << " sizeClasses or outputByInjectorId. Restart with the same"
+            << " settings, or from a time without stored statistics"
+            << exit(FatalError);
+    }
+    label i = 0;
+    for (label j = 0; j < nGroups(); ++j)
+    {
+        for (sums& s : stored_[patch*nGroups() + j])
+        {
+            for (scalar* v : {&s.parcels, &s.particles, &s.mass, &s.speed, &s.angle})
+            {
+                const std::string& value = values[i++];
+                char* end = nullptr;
+                *v = std::strtod(value.c_str(), &end);
+                if (end == value.c_str() || *end != '\0')
+                {
+                    FatalErrorInFunction
+                        << "The statistics stored for patch "
+                        << patchNames_[patch] << " hold '" << value.c_str()
+                        << "', not a number" << exit(FatalError);
+                }
+            }
+        }
+    }
+}
+
+
+Foam::scalar Foam::fateStatistics::mass
+(
+    const List<row>& totals,
+    const fate outcome
+)
+{
+    scalar sum = 0;
+    for (const row& r : totals)
+    {
+        sum += r[outcome].mass;
+    }
+    return sum;
+}
+
+
+void Foam::fateStatistics::writeHeader
+(
+    Ostream& os,
+    const word& cloudName
+) const
+{
+    os  << "# adhesiveWallInteraction statistics of cloud " << cloudName
+        << ": totals since the start of the case, one row per time, patch,"
+        << " injector and size class; masses [kg], mean impact speed [m/s]"
+        << " and angle from the wall normal [deg] of the particles" << nl
+        << "# time\tpatch\tinjector\tdMin\tdMax";
+    for (const char* what : {"impact", "rebound", "capture", "escape"})
+    {
+        for (const char* of : {"Parcels", "Particles", "Mass"})
+        {
+            os << '\t' << what << of;
+        }
+    }
+    os  << "\treboundSpeed\treboundAngle\tcaptureSpeed\tcaptureAngle" << endl;
+}
+
+
+void Foam::fateStatistics::write
+(
+    Ostream& os,
+    const word& timeName,
+    const List<row>& totals
+) const
+{
+    forAll(patchNames_, patch)
+    {
+        for (label injector = 0; injector < nInjectors(); ++injector)
+        {
+            for (label sizeClass = 0; sizeClass < nClasses(); ++sizeClass)
+            {
+                const row& r = totals[rowIndex(patch, injector, sizeClass)];
+                os  << timeName << '\t' << patchNames_[patch] << '\t'
+                    << (
+                           injectorIds_.empty()
+                         ? string("all") : Foam::name(injectorIds_[injector])
+                       ).c_str()
+                    << '\t' << text(dMin(sizeClass)).c_str()
+                    << '\t' << text(dMax(sizeClass)).c_str();
+                sums all;
+                for (const sums& s : r)
+                {
+                    all.parcels += s.parcels;
+                    all.particles += s.particles;
+                    all.mass += s.mass;
+                }
+                for (const sums& s : {all, r[rebound], r[capture], r[escape]})
+                {
+                    os  << '\t' << text(s.parcels).c_str()
+                        << '\t' << text(s.particles).c_str()
+                        << '\t' << text(s.mass).c_str();
+                }
+                for (const sums& s : {r[rebound], r[capture]})
+                {
+                    os  << '\t' << text(mean(s.speed, s.particles)).c_str()
+                        << '\t' << text(mean(s.angle, s.particles)).c_str();
+                }
+                os << nl;
+            }
+        }
+    }
+    os.flush();
+}
+
+
+void Foam::fateStatistics::print(Ostream& os, const List<row>& totals) const
+{
+    forAll(patchNames_, patch)
+    {
+        for (label injector = 0; injector < nInjectors(); ++injector)
+        {
+            for (label sizeClass = 0; sizeClass < nClasses(); ++sizeClass)
+            {
+                const row& r = totals[rowIndex(patch, injector, sizeClass)];
+                os  << "    adhesiveWallInteraction patch "
+                    << patchNames_[patch];
+                if (!injectorIds_.empty())
+                {
+                    os << " injector " << injectorIds_[injector];
+                }
+                if (!edges_.empty())
+                {
+                    os  << " d [" << text(dMin(sizeClass)).c_str() << ", "
+                        << text(dMax(sizeClass)).c_str() << ") m";
+                }
+                const sums& b = r[rebound];
+                const sums& c = r[capture];
+                const sums& e = r[escape];
+                os  << " (parcels, particles, mass)" << nl
+                    << "      - impacts                     = "
+                    << b.parcels + c.parcels + e.parcels << ", "
+                    << b.particles + c.particles + e.particles << ", "
+                    << b.mass + c.mass + e.mass << nl
+                    << "      - rebounds                    = "
+                    << b.parcels << ", " << b.particles << ", " << b.mass << nl
+                    << "      - captures                    = "
+                    << c.parcels << ", " << c.particles << ", " << c.mass << nl
+                    << "      - escapes                     = "
+                    << e.parcels << ", " << e.particles << ", " << e.mass << nl
+                    << "      - captured: mean impact speed, angle = "
+                    << mean(c.speed, c.particles) << " m/s, "
+                    << mean(c.angle, c.particles) << " deg" << nl
+                    << "      - rebounded: mean impact speed, angle = "
+                    << mean(b.speed, b.particles) << " m/s, "
+                    << mean(b.angle, b.particles) << " deg" << nl;
+            }
+        }
+    }
+}

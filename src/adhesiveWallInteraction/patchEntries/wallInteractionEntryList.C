@@ -1,0 +1,229 @@
+#include "wallInteractionEntryList.H"
+#include "checkedInput.H"
+#include "releaseCompat.H"
+#include "wallPolyPatch.H"
+
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- The entry's name matches the patch's name or one of its groups
+bool matches(const keyType& key, const wallInteractionEntryList::patch& p)
+{
+    if (key.match(p.name))
+    {
+        return true;
+    }
+    for (const word& group : p.groups)
+    {
+        if (key.match(group))
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
+//- The entries of the patches list, which must be a list of dictionaries
+PtrList<entry> patchEntries(const dictionary& coeffs)
+{
+    const char* form = "( <patch name, regex or group> { type ...; } ... )";
+    const entry* e = checkedInput::find(coeffs, "patches");
+    if (!e)
+    {
+        checkedInput::fail
+        (
+            coeffs, "patches", "missing", std::string("give a list ") + form
+        );
+    }
+    const auto isListStart = [](const token& t)
+    {
+        return t.isPunctuation() && t.pToken() == token::BEGIN_LIST;
+    };
+    if
+    (
+        e->isDict()
+     || e->stream().size() < 2
+     || !(
+            isListStart(e->stream()[0])
+         || (e->stream()[0].isLabel() && isListStart(e->stream()[1]))
+        )
+    )
+    {
+        checkedInput::fail
+        (
+            coeffs, "patches", checkedInput::entryText(*e),
+            std::string("must be a list ") + form
+        );
+    }
+    PtrList<entry> list(e->stream());
+    for (const entry& item : list)
+    {
+        if (!item.isDict())
+        {
+            checkedInput::fail
+            (
+                coeffs, "patches", checkedInput::entryText(item),
+                "entry " + item.keyword() + " must be a dictionary: "
+              + item.keyword() + " { type ...; }"
+            );
+        }
+    }
+    return list;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * //
+
+Foam::List<Foam::wallInteractionEntryList::patch>
+Foam::wallInteractionEntryList::patchesOf(const polyBoundaryMesh& bMesh)
+{
+    List<patch> patches(bMesh.size());
+    forAll(bMesh, patchi)
+    {
+        const polyPatch& pp = bMesh[patchi];
+        patches[patchi] =
+        {
+            pp.name(), pp.type(), pp.inGroups(), bool(isA<wallPolyPatch>(pp)),
+            compat::isConstraint(pp)
+        };
+    }
+    return patches;
+}
+
+
+Foam::List<Foam::wallInteractionEntryList::patch>
+Foam::wallInteractionEntryList::patchesOf(const PtrList<entry>& boundary)
+{
+    List<patch> patches(boundary.size());
+    forAll(boundary, patchi)
+    {
+        const dictionary& dict = boundary[patchi].dict();
+        patch& p = patches[patchi];
+        p.name = boundary[patchi].keyword();
+        p.type = checkedInput::readWord(dict, "type");
+        p.wall = (p.type == wallPolyPatch::typeName);
+        p.constraint = compat::isConstraintType(p.type);
+        if (const entry* groups = checkedInput::find(dict, "inGroups"))
+        {
+            p.groups = wordList(groups->stream());
+        }
+        if
+        (
+            (p.wall || p.constraint)
+         && std::find(p.groups.begin(), p.groups.end(), p.type)
+         == p.groups.end()
+        )
+        {
+            p.groups.append(p.type);
+        }
+    }
+    return patches;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::wallInteractionEntryList::wallInteractionEntryList
+(
+    const dictionary& coeffs,
+    const UList<patch>& patches,
+    const wallInteractionEntry::particleMaterial& particle
+)
+:
+    entries_(),
+    patchEntry_(patches.size(), -1),
+    warnings_()
+{
+    // Each entry read once, named after its place in the cloud properties
+    // for messages
+    for (const entry& e : patchEntries(coeffs))
+    {
+        dictionary entryDict(coeffs, e.dict());
+        entryDict.name() = coeffs.name() + ".patches." + e.keyword();
+        entries_.emplace_back(e.keyword(), entryDict, particle);
+    }
+
+    // The first entry matching a patch applies to it
+    for (std::size_t entryi = 0; entryi < entries_.size(); ++entryi)
+    {
+        const keyType& name = entries_[entryi].name();
+        bool matched = false, used = false;
+        forAll(patches, patchi)
+        {
+            if (matches(name, patches[patchi]))
+            {
+                matched = true;
+                if (patchEntry_[patchi] < 0 && !patches[patchi].constraint)
+                {
+                    patchEntry_[patchi] = entryi;
+                    used = true;
+                }
+            }
+        }
+        if (!matched)
+        {
+            warnings_.push_back
+            (
+                "No patch matches the entry " + name + " of " + coeffs.name()
+            );
+        }
+        else if (!used)
+        {
+            warnings_.push_back
+            (
+                "The entry " + name + " of " + coeffs.name() + " is never"
+                " used: the patches it matches are constraint patches or"
+                " matched by an earlier entry (the first match applies)"
+            );
+        }
+    }
+
+    std::string unmatched;
+    forAll(patches, patchi)
+    {
+        const patch& p = patches[patchi];
+        if (p.constraint)
+        {
+            continue;
+        }
+        const wallInteractionEntry* e = entryOf(patchi);
+        if (!e)
+        {
+            unmatched += (unmatched.empty() ? "" : " ") + p.name;
+        }
+        else if (e->type() == wallInteractionEntry::interaction::none)
+        {
+            warnings_.push_back
+            (
+                "Patch " + p.name + " has type none: "
+              + (
+                    p.wall
+                  ? "a parcel reaching this wall stops the run (OpenFOAM"
+                    " would leave it on the wall for ever)"
+                  : "its parcels leave as OpenFOAM's system escapes,"
+                    " outside this model's statistics and mass balance"
+                )
+              + "; use adhesive, rebound, stick or escape to have them"
+                " handled and counted"
+            );
+        }
+    }
+    if (!unmatched.empty())
+    {
+        checkedInput::fail
+        (
+            coeffs, "patches", "(...)",
+            "no entry matches the patches (" + unmatched + "); every patch"
+            " that is not a constraint patch needs one"
+        );
+    }
+}

@@ -1,0 +1,160 @@
+#include "wallInteractionCoeffs.H"
+#include "checkedInput.H"
+#include "releaseCompat.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- Check the keywords first, then read capture
+bool readRemoveCaptured(const dictionary& coeffs, const wordList& baseKeywords)
+{
+    wordList valid(wallInteractionCoeffs::keywords);
+    valid.append(baseKeywords);
+    checkedInput::requireKnownKeywords
+    (
+        coeffs, valid, "adhesiveWallInteraction coefficients"
+    );
+    return
+        checkedInput::readWord(coeffs, "capture", "stick", {"stick", "remove"})
+     == "remove";
+}
+
+
+bool readOutputByInjectorId(const dictionary& coeffs)
+{
+    const bool byInjector =
+        checkedInput::readSwitch(coeffs, "outputByInjectorId", false);
+    if (byInjector && !compat::parcelsKnowTheirInjector)
+    {
+        checkedInput::fail
+        (
+            coeffs, "outputByInjectorId", "yes",
+            std::string("not available on ") + compat::flavour()
+          + "'s OpenFOAM, whose parcels do not carry their injector; use"
+            " sizeClasses, or a cloud per injector"
+        );
+    }
+    return byInjector;
+}
+
+
+//- Diameters between size classes: > 0, strictly increasing
+scalarList readSizeClassEdges(const dictionary& coeffs)
+{
+    const scalarList edges(checkedInput::readNumbers(coeffs, "sizeClasses"));
+    const entry* e = checkedInput::find(coeffs, "sizeClasses");
+    if (e && edges.empty())
+    {
+        checkedInput::fail
+        (
+            coeffs, "sizeClasses", "()",
+            "needs at least one diameter [m] between classes"
+        );
+    }
+    forAll(edges, i)
+    {
+        if (!(edges[i] > 0) || (i && !(edges[i] > edges[i - 1])))
+        {
+            checkedInput::fail
+            (
+                coeffs, "sizeClasses", checkedInput::entryText(*e),
+                "diameters [m] must be > 0 and increase strictly"
+            );
+        }
+    }
+    return edges;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+const Foam::wordList Foam::wallInteractionCoeffs::keywords
+{
+    "particle", "capture", "writeFields", "outputByInjectorId", "sizeClasses",
+    "writeToFile", "maxImpactRecords", "patches"
+};
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+const Foam::wallInteractionCoeffs::particleConstants&
+Foam::wallInteractionCoeffs::particle
+(
+    const dictionary& coeffs,
+    const std::optional<brachDunn::ElasticMaterial>& cloudParticle
+)
+{
+    if (particle_)
+    {
+        return *particle_;
+    }
+    const dictionary* dict = checkedInput::findDictionary
+    (
+        coeffs, "particle", "{ E <Pa>; nu <->; }"
+    );
+    if (dict)
+    {
+        checkedInput::requireKnownKeywords
+        (
+            *dict, {"E", "nu"}, "the particle's elastic constants"
+        );
+        particle_ = particleConstants{readElasticMaterial(*dict), "particle"};
+    }
+    else if (cloudParticle)
+    {
+        checkedInput::coreCall(coeffs, [&]{ cloudParticle->check(); });
+        particle_ = particleConstants
+        {
+            *cloudParticle, "constantProperties youngsModulus, poissonsRatio"
+        };
+    }
+    else
+    {
+        checkedInput::fail
+        (
+            coeffs, "particle", "missing",
+            "an adhesive patch entry needs the particle's elastic constants,"
+            " particle { E <Pa>; nu <->; } (colliding clouds take"
+            " constantProperties youngsModulus and poissonsRatio)"
+        );
+    }
+    return *particle_;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::wallInteractionCoeffs::wallInteractionCoeffs
+(
+    const dictionary& coeffs,
+    const UList<wallInteractionEntryList::patch>& patches,
+    const std::optional<brachDunn::ElasticMaterial>& cloudParticle,
+    const wordList& baseKeywords
+)
+:
+    removeCaptured_(readRemoveCaptured(coeffs, baseKeywords)),
+    writeFields_(checkedInput::readSwitch(coeffs, "writeFields", false)),
+    writeToFile_(checkedInput::readSwitch(coeffs, "writeToFile", false)),
+    outputByInjectorId_(readOutputByInjectorId(coeffs)),
+    maxImpactRecords_(checkedInput::readCount(coeffs, "maxImpactRecords", 0)),
+    sizeClassEdges_(readSizeClassEdges(coeffs)),
+    particle_(),
+    entries_
+    (
+        coeffs,
+        patches,
+        [&]{ return particle(coeffs, cloudParticle).material; }
+    )
+{
+    // A particle given but not used is still checked
+    if (checkedInput::find(coeffs, "particle"))
+    {
+        particle(coeffs, cloudParticle);
+    }
+}
