@@ -65,29 +65,6 @@ labelList injectorIds(const CloudType& cloud)
     return ids;
 }
 
-//- The names of the patches, and whether an entry handles them
-inline wordList patchNames(const polyBoundaryMesh& bMesh)
-{
-    wordList names(bMesh.size());
-    forAll(bMesh, patchi)
-    {
-        names[patchi] = bMesh[patchi].name();
-    }
-    return names;
-}
-
-inline boolList handled(const wallInteractionEntryList& entries, const label nPatches)
-{
-    boolList handled(nPatches);
-    forAll(handled, patchi)
-    {
-        const wallInteractionEntry* entry = entries.entryOf(patchi);
-        handled[patchi] =
-            entry && entry->type() != wallInteractionEntry::interaction::none;
-    }
-    return handled;
-}
-
 } // End namespace adhesiveWallInteractionDetail
 } // End namespace Foam
 
@@ -222,14 +199,8 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     ),
     statistics_
     (
-        adhesiveWallInteractionDetail::patchNames
-        (
-            compat::boundaryMesh(cloud.mesh())
-        ),
-        adhesiveWallInteractionDetail::handled
-        (
-            coeffs_.entries(), compat::boundaryMesh(cloud.mesh()).size()
-        ),
+        coeffs_.entries().patchNames(),
+        coeffs_.entries().handled(),
         coeffs_.outputByInjectorId()
       ? adhesiveWallInteractionDetail::injectorIds(cloud) : labelList(),
         coeffs_.sizeClassEdges()
@@ -292,7 +263,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         (
             outputDir()/"impacts.csv",
             coeffs_.maxImpactRecords(),
-            patchNames(compat::boundaryMesh(cloud.mesh()))
+            coeffs_.entries().patchNames()
         );
     }
     if (coeffs_.writeToFile() && Pstream::master())

@@ -32,6 +32,25 @@ const ITstream& tokensOf
 }
 
 
+//- The token is the punctuation c
+bool isPunctuation(const token& t, const char c)
+{
+    return t.isPunctuation() && t.pToken() == c;
+}
+
+
+//- The entry of a required keyword
+const entry& required(const dictionary& dict, const word& keyword)
+{
+    const entry* e = checkedInput::find(dict, keyword);
+    if (!e)
+    {
+        checkedInput::fail(dict, keyword, "missing", "keyword is required");
+    }
+    return *e;
+}
+
+
 //- A word OpenFOAM reads where a number was meant to be infinite or NaN
 bool namesNonFinite(const token& t)
 {
@@ -77,10 +96,6 @@ std::string Foam::checkedInput::entryText(const entry& e)
     }
     OStringStream os;
     const ITstream& tokens = e.stream();
-    const auto isPunctuation = [](const token& t, const char c)
-    {
-        return t.isPunctuation() && t.pToken() == c;
-    };
     forAll(tokens, i)
     {
         // Spaced as written: (a b), not ( a b )
@@ -103,6 +118,15 @@ std::string Foam::checkedInput::entryText(const entry& e)
         }
     }
     return os.str();
+}
+
+
+Foam::label Foam::checkedInput::listStart(const ITstream& tokens)
+{
+    const label first = tokens.size() && tokens[0].isLabel() ? 1 : 0;
+    return
+        tokens.size() > first && isPunctuation(tokens[first], token::BEGIN_LIST)
+      ? first : -1;
 }
 
 
@@ -138,12 +162,7 @@ Foam::scalar Foam::checkedInput::readNumber
     const word& keyword
 )
 {
-    const entry* e = find(dict, keyword);
-    if (!e)
-    {
-        fail(dict, keyword, "missing", "keyword is required");
-    }
-    return numberOf(dict, *e);
+    return numberOf(dict, required(dict, keyword));
 }
 
 
@@ -172,15 +191,11 @@ Foam::scalarList Foam::checkedInput::readNumbers
         return values;
     }
     const ITstream& tokens = tokensOf(dict, *e, "a list of numbers");
-    const auto isPunctuation = [](const token& t, const char c)
-    {
-        return t.isPunctuation() && t.pToken() == c;
-    };
     // (a b c), or with OpenFOAM's size prefix: N(a b c)
-    const label first = tokens.size() && tokens[0].isLabel() ? 1 : 0;
+    const label first = listStart(tokens);
     bool good =
-        tokens.size() >= first + 2
-     && isPunctuation(tokens[first], token::BEGIN_LIST)
+        first >= 0
+     && tokens.size() >= first + 2
      && isPunctuation(tokens[tokens.size() - 1], token::END_LIST);
     for (label i = first + 1; good && i < tokens.size() - 1; ++i)
     {
@@ -269,15 +284,11 @@ Foam::word Foam::checkedInput::readWord
     const word& keyword
 )
 {
-    const entry* e = find(dict, keyword);
-    if (!e)
-    {
-        fail(dict, keyword, "missing", "keyword is required");
-    }
-    const ITstream& tokens = tokensOf(dict, *e, "a word");
+    const entry& e = required(dict, keyword);
+    const ITstream& tokens = tokensOf(dict, e, "a word");
     if (tokens.size() != 1 || !tokens[0].isWord())
     {
-        fail(dict, keyword, entryText(*e), "must be one word");
+        fail(dict, keyword, entryText(e), "must be one word");
     }
     return tokens[0].wordToken();
 }

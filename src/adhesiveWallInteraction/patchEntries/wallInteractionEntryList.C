@@ -42,19 +42,7 @@ PtrList<entry> patchEntries(const dictionary& coeffs)
             coeffs, "patches", "missing", std::string("give a list ") + form
         );
     }
-    const auto isListStart = [](const token& t)
-    {
-        return t.isPunctuation() && t.pToken() == token::BEGIN_LIST;
-    };
-    if
-    (
-        e->isDict()
-     || e->stream().size() < 2
-     || !(
-            isListStart(e->stream()[0])
-         || (e->stream()[0].isLabel() && isListStart(e->stream()[1]))
-        )
-    )
+    if (e->isDict() || checkedInput::listStart(e->stream()) < 0)
     {
         checkedInput::fail
         (
@@ -140,9 +128,15 @@ Foam::wallInteractionEntryList::wallInteractionEntryList
 )
 :
     entries_(),
+    patchNames_(patches.size()),
     patchEntry_(patches.size(), -1),
     warnings_()
 {
+    forAll(patches, patchi)
+    {
+        patchNames_[patchi] = patches[patchi].name;
+    }
+
     // Each entry read once, named after its place in the cloud properties
     // for messages
     for (const entry& e : patchEntries(coeffs))
@@ -226,4 +220,19 @@ Foam::wallInteractionEntryList::wallInteractionEntryList
             " that is not a constraint patch needs one"
         );
     }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::boolList Foam::wallInteractionEntryList::handled() const
+{
+    boolList handled(patchEntry_.size());
+    forAll(handled, patchi)
+    {
+        const wallInteractionEntry* entry = entryOf(patchi);
+        handled[patchi] =
+            entry && entry->type() != wallInteractionEntry::interaction::none;
+    }
+    return handled;
 }
