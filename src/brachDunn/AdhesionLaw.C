@@ -30,7 +30,7 @@ AdhesionLaw vanDerWaalsFrom(const Parameters& parameters)
             " or the Hamaker constant A [J]"
         );
     }
-    if (A) requirePositive("A", *A);
+    if (A) requireAboveAtMost("A", *A, 0, AdhesionLaw::maxHamaker);
     return AdhesionLaw::vanDerWaals
     (
         h ? *h : 4*pi*(*A)/3,
@@ -61,23 +61,23 @@ AdhesionLaw AdhesionLaw::none()
 
 AdhesionLaw AdhesionLaw::constant(double gamma)
 {
-    requireNonNegative("gamma", gamma);
+    requireInRange("gamma", gamma, 0, maxGamma);
     return AdhesionLaw(Constant{gamma});
 }
 
 
 AdhesionLaw AdhesionLaw::powerLaw(double c, double n)
 {
-    requireNonNegative("c", c);
-    requireNonNegative("n", n);
+    requireInRange("c", c, 0, maxGamma);
+    requireInRange("n", n, 0, maxExponent);
     return AdhesionLaw(PowerLaw{c, n});
 }
 
 
 AdhesionLaw AdhesionLaw::vanDerWaals(double h, double z, double f)
 {
-    requirePositive("h", h);
-    requirePositive("z", z);
+    requireAboveAtMost("h", h, 0, maxH);
+    requireInRange("z", z, minZ, maxZ);
     requireInRange("f", f, 0, 1);
     return AdhesionLaw(VanDerWaals{h, z, f});
 }

@@ -29,7 +29,7 @@ ImpactModel::ImpactModel
     particleMaterial_.check();
     wallMaterial_.check();
     requireInRange("momentCoeff", momentCoeff_, -1, 1);
-    requireNonNegative("minReboundSpeed", minReboundSpeed_);
+    requireInRange("minReboundSpeed", minReboundSpeed_, 0, maxSpeed);
 
     complianceSum_ = particleMaterial_.compliance() + wallMaterial_.compliance();
     contactModulus_ = 1/(pi*complianceSum_);
@@ -46,8 +46,8 @@ ImpactResult ImpactModel::impact
 ) const
 {
     particle.check();
-    requireFinite("un", un);
-    requireNonNegative("ut", ut);
+    requireInRange("un", un, -maxSpeed, maxSpeed);
+    requireInRange("ut", ut, 0, maxSpeed);
     requireFinite("spin", spin);
 
     ImpactResult res;
@@ -215,7 +215,7 @@ Impact3D ImpactModel::impact
 HertzContact ImpactModel::hertz(const Particle& particle, double un) const
 {
     particle.check();
-    requirePositive("un", un);
+    requireAboveAtMost("un", un, 0, maxSpeed);
 
     const double m = particle.mass();
     const double r = particle.radius();
@@ -241,8 +241,8 @@ AdhesionLaw::Work ImpactModel::measuredAdhesion
 ) const
 {
     particle.check();
-    requirePositive("un", un);
-    requireNonNegative("unOut", unOut);
+    requireAboveAtMost("un", un, 0, maxSpeed);
+    requireInRange("unOut", unOut, 0, maxSpeed);
 
     const double m = particle.mass();
     const double r = particle.radius();

@@ -61,7 +61,8 @@ RestitutionLaw RestitutionLaw::constant(double R)
 RestitutionLaw RestitutionLaw::powerLaw(double k, double p)
 {
     requirePositive("k", k);
-    requireNonNegative("p", p);
+    // Larger exponents have no physical meaning and would overflow un^p
+    requireInRange("p", p, 0, maxExponent);
     return RestitutionLaw(PowerLaw{k, p});
 }
 
@@ -89,7 +90,7 @@ RestitutionLaw RestitutionLaw::elasticPlasticYieldVelocity(double vy)
 
 RestitutionLaw RestitutionLaw::elasticPlasticYieldStress(double py)
 {
-    requirePositive("yieldStress", py);
+    requireAboveAtMost("yieldStress", py, 0, ElasticMaterial::maxE);
     return RestitutionLaw(ElasticPlasticFromStress{py});
 }
 

@@ -273,8 +273,14 @@ void splitImpacts
     for (const Measurement& m : data)
     {
         const std::string where = " (line " + std::to_string(m.line) + ")";
-        requirePositive(("diameter" + where).c_str(), m.d);
-        requirePositive(("speedIn" + where).c_str(), m.speedIn);
+        requireInRange
+        (
+            ("diameter" + where).c_str(), m.d, Particle::minD, Particle::maxD
+        );
+        requireAboveAtMost
+        (
+            ("speedIn" + where).c_str(), m.speedIn, 0, ImpactModel::maxSpeed
+        );
         requireNonNegative(("speedOut" + where).c_str(), m.speedOut);
         if (m.speedOut > m.speedIn)
         {

@@ -28,7 +28,11 @@ Usage
 #include "releaseCompat.H"
 #include "wallInteractionCoeffs.H"
 
+#include <fenv.h>
+
+#include <cmath>
 #include <iostream>
+#include <regex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,7 +45,7 @@ namespace
 //- One change of the valid coefficients
 struct edit
 {
-    enum class kind { set, remove, removePatch, addPatch };
+    enum class kind { set, remove, removePatch, addPatch, replacePatches };
     kind what;
     std::string where;      //!< "" the coefficients, a patch entry's name,
                             //!< or a sub-dictionary path (floor/adhesion)
@@ -84,6 +88,10 @@ struct coefficients
 {
     dictionary coeffs;
     std::vector<std::pair<std::string, dictionary>> patches;
+
+    //- The patches entry as text, in place of the list (when set; empty:
+    //  no patches entry)
+    std::optional<std::string> patchesText;
 
     static dictionary parse(const std::string& text)
     {
@@ -157,6 +165,9 @@ struct coefficients
             case edit::kind::addPatch:
                 patches.push_back({e.where, parse(e.text)});
                 break;
+            case edit::kind::replacePatches:
+                patchesText = e.text;
+                break;
         }
     }
 
@@ -165,20 +176,65 @@ struct coefficients
     {
         OStringStream os;
         coeffs.write(os, false);
-        os << "patches" << nl << '(' << nl;
-        for (const auto& [name, dict] : patches)
+        if (patchesText)
         {
-            os << name.c_str();
-            dict.write(os, true);
+            os << patchesText->c_str() << nl;
         }
-        os << ");" << nl;
-        dictionary dict(parse(os.str()));
-        dict.name() =
+        else
+        {
+            os << "patches" << nl << '(' << nl;
+            for (const auto& [name, dict] : patches)
+            {
+                os << name.c_str();
+                dict.write(os, true);
+            }
+            os << ");" << nl;
+        }
+        // Named as the solver names it, sub-dictionaries too
+        IStringStream is(os.str());
+        is.name() =
             "constant/kinematicCloudProperties.subModels"
             ".adhesiveWallInteractionCoeffs";
+        dictionary dict(is);
+        dict.name() = is.name();
         return dict;
     }
 };
+
+
+//- Hit every entry that has impacts with particles of a range of sizes,
+//  speeds (up to the largest the core takes) and angles, floating-point
+//  errors trapped (a trap ends the test): the coefficients a dictionary
+//  passes must not overflow
+void hitEveryEntry(const wallInteractionCoeffs& coeffs)
+{
+    using interaction = wallInteractionEntry::interaction;
+    feenableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
+    const vector nw(0, 0, -1);
+    for (const wallInteractionEntry& entry : coeffs.entries().entries())
+    {
+        if (entry.type() == interaction::none) continue;
+        for (const scalar d : {1e-10, 1e-7, 4.9e-6, 1e-3, 10.0})
+        {
+            for (const scalar v : {1e-9, 1e-3, 1.0, 1e2, 1e4, 1e8})
+            {
+                for (const scalar angle : {0.0, 1.0, 1.5707})
+                {
+                    const vector U(v*std::sin(angle), 0, -v*std::cos(angle));
+                    const wallImpact r = entry.impact(d, 1e5, U, nw);
+                    if (!std::isfinite(magSqr(r.U)) || !std::isfinite(r.energyLoss))
+                    {
+                        FatalErrorInFunction
+                            << "entry " << entry.name() << ": impact at d "
+                            << d << " v " << v << " not finite"
+                            << exit(FatalError);
+                    }
+                }
+            }
+        }
+    }
+    fedisableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
+}
 
 
 //- Read the coefficients of a case; false, and the message, on an error
@@ -197,10 +253,16 @@ bool readCoefficients(const inputCase& c, std::string& message)
     try
     {
         const compat::fatalErrorsThrow throwing;
+        // As the solver: the base classes' keywords first
+        const dictionary coeffsDict(k.dictionaryOf());
+        dictionary subModels;
+        subModels.add("adhesiveWallInteractionCoeffs", coeffsDict);
+        compat::checkedBaseKeywords(subModels, "adhesiveWallInteraction");
         const wallInteractionCoeffs coeffs
         (
-            k.dictionaryOf(), c.patches, cloudParticle, compat::baseKeywords()
+            coeffsDict, c.patches, cloudParticle, compat::baseKeywords()
         );
+        hitEveryEntry(coeffs);
         return true;
     }
     catch (const Foam::error& err)
@@ -208,6 +270,25 @@ bool readCoefficients(const inputCase& c, std::string& message)
         message = err.message();
         return false;
     }
+    catch (const brachDunn::InputError& err)
+    {
+        message = std::string("an impact of valid coefficients refused: ")
+          + err.what();
+        return false;
+    }
+}
+
+
+//- The box's patches with a symmetry patch, front
+List<wallInteractionEntryList::patch> withSymmetry()
+{
+    return
+    {
+        {"floor", "wall", {"wall"}, true, false},
+        {"ceiling", "wall", {"wall"}, true, false},
+        {"sides", "wall", {"wall"}, true, false},
+        {"front", "symmetry", {"symmetry"}, false, true}
+    };
 }
 
 
@@ -235,7 +316,7 @@ std::vector<inputCase> cases()
         {"nu", {set("floor", "nu 0.7")},
             {"keyword 'nu' = 0.7", "must be in (-1, 0.5]", floorCoeffs}},
         {"E", {set("floor", "E -3e11")},
-            {"keyword 'E' = -3e+11", "must be > 0"}},
+            {"keyword 'E' = -3e+11", "must be in [1, 1e+14]"}},
         {"restitutionType", {set("floor", "restitution { type bouncy; }")},
             {"keyword 'type' = bouncy", "unknown restitution law",
              "patches.floor.restitution"}},
@@ -244,7 +325,7 @@ std::vector<inputCase> cases()
         {"R", {set("floor", "restitution { type constant; R 1.5; }")},
             {"keyword 'R' = 1.5", "must be in [0, 1]"}},
         {"gamma", {set("floor", "adhesion { type constant; gamma -1; }")},
-            {"keyword 'gamma' = -1", "must be >= 0"}},
+            {"keyword 'gamma' = -1", "must be in [0, 1e+06]"}},
         {"mu", {set("floor", "friction { type coulomb; mu -0.2; }")},
             {"keyword 'mu' = -0.2", "must be >= 0"}},
         {"momentCoeff", {set("floor", "momentCoeff 2")},
@@ -283,8 +364,214 @@ std::vector<inputCase> cases()
             {"keyword 'writeToFiles' = yes",
              "not a keyword of adhesiveWallInteraction coefficients"}},
         {"sizeClassesOrder", {set("", "sizeClasses (2e-6 1e-6)")},
-            {"keyword 'sizeClasses' = (2e-06 1e-06)", "increase strictly"}}
+            {"keyword 'sizeClasses' = (2e-06 1e-06)", "increase strictly"}},
+        // Coefficients that used to overflow at the first impact
+        {"powerLawP1100", {set("floor", "restitution { type powerLaw; k 45.3; p 1100; }")},
+            {"keyword 'p' = 1100", "must be in [0, 10]"}},
+        {"powerLawP1e300", {set("floor", "restitution { type powerLaw; k 45.3; p 1e300; }")},
+            {"keyword 'p' = 1e+300"}},
+        {"adhesionN1100", {set("floor", "adhesion { type powerLaw; c 0.34; n 1100; }")},
+            {"keyword 'n' = 1100", "must be in [0, 10]"}},
+        {"adhesionN1e300", {set("floor", "adhesion { type powerLaw; c 0.34; n 1e300; }")},
+            {"keyword 'n' = 1e+300"}},
+        {"yieldStress1e62", {set("floor", "restitution { type elasticPlastic; yieldStress 1e62; }")},
+            {"keyword 'yieldStress' = 1e+62", "must be in (0, 1e+14]"}},
+        {"yieldStress1e300", {set("floor", "restitution { type elasticPlastic; yieldStress 1e300; }")},
+            {"keyword 'yieldStress' = 1e+300"}},
+        {"vanDerWaalsHuge", {set("floor", "adhesion { type vanDerWaals; h 1e300; z 1e-100; f 1; }")},
+            {"keyword 'h' = 1e+300", "must be in (0, 1e-14]"}},
+        {"validAtTheLimits",
+            {set("floor", "restitution { type elasticPlastic; yieldStress 1e14; }"),
+             set("floor", "adhesion { type powerLaw; c 1e6; n 10; }")}, {}},
+        {"validPowerLawLimits",
+            {set("floor", "restitution { type powerLaw; k 1e-3; p 10; }")}, {}},
+        {"validVanDerWaalsLimits",
+            {set("floor", "adhesion { type vanDerWaals; h 1e-14; z 1e-12; f 1; }")}, {}},
+
+        // Values that used to abort, crash, or read in silence
+        {"dictionaryForE", {set("floor", "E { a 1; }")},
+            {"keyword 'E' = { ... }", "must be a number, not a dictionary"}},
+        {"dictionaryForType", {set("floor", "type { a 1; }")},
+            {"keyword 'type' = { ... }", "must be a word, not a dictionary"}},
+        {"dictionaryForCapture", {set("", "capture { a 1; }")},
+            {"keyword 'capture' = { ... }"}},
+        {"dictionaryForWriteFields", {set("", "writeFields { a 1; }")},
+            {"keyword 'writeFields' = { ... }", "must be yes or no"}},
+        {"dictionaryForParticleNu", {set("particle", "nu { a 1; }")},
+            {"keyword 'nu' = { ... }"}},
+        {"dictionaryForReboundE", {set("\"(ceiling|sides)\"", "e { a 1; }")},
+            {"keyword 'e' = { ... }"}},
+        {"dictionaryForPatches",
+            {{edit::kind::replacePatches, "", "patches { floor { type stick; } }"}},
+            {"keyword 'patches' = { ... }", "must be a list"}},
+        {"writeFields2", {set("", "writeFields 2")},
+            {"keyword 'writeFields' = 2", "must be yes or no"}},
+        {"outputByInjectorIdWord", {set("", "outputByInjectorId maybe")},
+            {"keyword 'outputByInjectorId' = maybe"}},
+        {"minusInfE", {set("floor", "E -inf")},
+            {"keyword 'E' = -inf", "must be a finite number"}},
+        // (OpenFOAM's own parser reads numbers below 1e-300 as 0)
+        {"tinyE", {set("floor", "E 1e-299")},
+            {"keyword 'E' = 1e-299", "must be in [1, 1e+14]"}},
+        {"unusedBadParticle",
+            {set("floor", "type stick"), set("", "particle { E -1; nu 0.9; }")},
+            {"keyword 'E' = -1", ".particle"}},
+        {"unusedParticleWord",
+            {set("floor", "type stick"), set("", "particle foo")},
+            {"keyword 'particle' = foo", "must be a dictionary"}},
+        {"tableGarbage",
+            {set("floor", "restitution { type table; values ((0 1) (10 x)); }")},
+            {"keyword 'values' = ((0 1) (10 x))", "list of (speed value) pairs"}},
+        {"validTable",
+            {set("floor", "restitution { type table; values ((0 1) (10 0.9)); }")}, {}},
+
+        // Base classes' keywords, checked before the base classes read them
+        {"baseWriteToFileDictionary", {set("", "writeToFile { a 1; }")},
+            {"keyword 'writeToFile' = { ... }"}},
+        {"baseUDictionary", {set("", "U { a 1; }")},
+            {"keyword 'U' = { ... }", "must be a word"}},
+
+        // Constraint patches, opt-in (patchType)
+        {"validSymmetryOptIn",
+            {{edit::kind::addPatch, "front", "type stick; patchType symmetry;"}},
+            {}, false, withSymmetry()},
+        {"symmetryLeftToOpenFOAM", {}, {}, false, withSymmetry()},
+        {"patchTypeWrong",
+            {{edit::kind::addPatch, "front", "type stick; patchType cyclic;"}},
+            {"keyword 'patchType' = cyclic",
+             "valid values are symmetry, symmetryPlane, wedge"},
+            false, withSymmetry()}
     };
+}
+
+//- Generated mutations of the valid coefficients: every keyword given a
+//  wrong kind of value, a value out of any range, deleted or misspelt.
+//  Each must read, or stop with a message naming a keyword and its value;
+//  expected: the keyword and the value as the message shows it
+struct mutation
+{
+    std::string name;
+    edit change;
+    std::string keyword;
+    std::string shown;      //!< the value as messages show it
+};
+
+std::vector<mutation> mutations()
+{
+    const std::vector<std::pair<std::string, std::string>> sites
+    {
+        {"", "writeFields"}, {"", "writeToFile"}, {"", "maxImpactRecords"},
+        {"", "capture"}, {"", "outputByInjectorId"}, {"", "sizeClasses"},
+        {"", "particle"}, {"", "U"}, {"", "defaultCoeffs"},
+        {"particle", "E"}, {"particle", "nu"},
+        {"floor", "type"}, {"floor", "E"}, {"floor", "nu"},
+        {"floor", "momentCoeff"}, {"floor", "minReboundSpeed"},
+        {"floor", "friction"}, {"floor", "restitution"}, {"floor", "adhesion"},
+        {"floor", "patchType"},
+        {"floor/restitution", "type"}, {"floor/restitution", "k"},
+        {"floor/restitution", "p"},
+        {"floor/adhesion", "type"}, {"floor/adhesion", "c"},
+        {"floor/adhesion", "n"},
+        {"floor/friction", "type"},
+        {"\"(ceiling|sides)\"", "type"}, {"\"(ceiling|sides)\"", "e"},
+        {"\"(ceiling|sides)\"", "mu"}
+    };
+    // (value as written, value as the messages show it)
+    const std::vector<std::pair<std::string, std::string>> values
+    {
+        {"{ a 1; }", "{ ... }"}, {"foo", "foo"}, {"1 2", "1 2"},
+        {"nan", "nan"}, {"-inf", "-inf"}, {"inf", "inf"},
+        {"1e-299", "1e-299"}, {"1e300", "1e+300"}, {"-1", "-1"},
+        {"0", "0"}, {"2", "2"}, {"0.5", "0.5"}, {"(1 2)", "(1 2)"},
+        {"\"text\"", "\"text\""}, {"yes", "yes"}, {"1100", "1100"},
+        {"1e62", "1e+62"}, {"-0.99", "-0.99"}
+    };
+    std::vector<mutation> all;
+    for (const auto& [value, shown] : values)
+    {
+        all.push_back
+        (
+            {
+                "patches = " + value,
+                {edit::kind::replacePatches, "", "patches " + value + ";"},
+                "patches", shown
+            }
+        );
+    }
+    all.push_back
+    (
+        {"patches deleted", {edit::kind::replacePatches, "", ""}, "patches", "missing"}
+    );
+    for (const auto& [where, keyword] : sites)
+    {
+        const std::string site = (where.empty() ? "" : where + "/") + keyword;
+        for (const auto& [value, shown] : values)
+        {
+            all.push_back
+            (
+                {site + " = " + value, set(where, keyword + " " + value), keyword, shown}
+            );
+        }
+        all.push_back({site + " deleted", remove(where, keyword), keyword, "missing"});
+        all.push_back
+        (
+            {site + " misspelt", set(where, keyword + "x 1"), keyword + "x", "1"}
+        );
+    }
+    return all;
+}
+
+
+//- Run the mutations; the number that failed. verbose: what each did
+label fuzz(const bool verbose)
+{
+    label failed = 0, read = 0, named = 0, other = 0;
+    for (const mutation& m : mutations())
+    {
+        inputCase c{m.name, {m.change}, {}};
+        std::string message;
+        if (readCoefficients(c, message))
+        {
+            ++read;
+            if (verbose)
+            {
+                std::cout << "fuzz: " << m.name << ": read\n";
+            }
+            continue;
+        }
+        // The error of this keyword and value, or of another keyword the
+        // change brought up (a type changed makes other keywords foreign),
+        // always in the model's form: keyword 'K' = value: requirement
+        const std::string exact =
+            "keyword '" + m.keyword + "' = " + m.shown + ": ";
+        const bool ours = std::regex_search
+        (
+            message, std::regex("keyword '[^']+' = [^\n]+: ")
+        );
+        if (message.find(exact) != std::string::npos)
+        {
+            ++named;
+        }
+        else if (ours)
+        {
+            ++other;
+            if (verbose)
+            {
+                std::cout << "fuzz: " << m.name << ": " << message << '\n';
+            }
+        }
+        else
+        {
+            ++failed;
+            std::cout << "fuzz: " << m.name << " FAILED: no keyword and value"
+                << " in the message\n    message: " << message << '\n';
+        }
+    }
+    std::cout << "fuzz: " << mutations().size() << " mutations: " << read
+        << " read, " << named << " stopped naming the keyword changed, "
+        << other << " stopped naming another keyword with its value, "
+        << failed << " failed\n";
+    return failed;
 }
 
 } // End anonymous namespace
@@ -294,6 +581,7 @@ int main(int argc, char *argv[])
 {
     argList::noParallel();
     compat::noBanner();
+    argList::addBoolOption("verbose", "what each generated mutation did");
     #include "setRootCase.H"
 
     label failed = 0;
@@ -329,5 +617,6 @@ int main(int argc, char *argv[])
         }
     }
     std::cout << "input: " << failed << " failed\n";
+    failed += fuzz(compat::optionFound(args, "verbose"));
     return failed ? 1 : 0;
 }

@@ -137,7 +137,8 @@ template<class CloudType>
 void Foam::AdhesiveWallInteraction<CloudType>::massBalance
 (
     Ostream& os,
-    const List<fateStatistics::row>& totals
+    const List<fateStatistics::row>& totals,
+    const bool printBalance
 )
 {
     scalar injected = 0;
@@ -158,24 +159,131 @@ void Foam::AdhesiveWallInteraction<CloudType>::massBalance
 
     const scalar captured = fateStatistics::mass(totals, fateStatistics::capture);
     const scalar escaped = fateStatistics::mass(totals, fateStatistics::escape);
-    const scalar residual = injected - (airborne + captured + escaped);
 
+    // The parcels the run started with (mapped, read, a previous stage):
+    // what the cloud held at the end of the first step beyond what the
+    // injectors gave
+    if (!initialMass_)
+    {
+        initialMass_ = airborne + captured + escaped - injected;
+    }
+    const scalar initial = *initialMass_;
+    const scalar residual = injected + initial - (airborne + captured + escaped);
+
+    if (!printBalance)
+    {
+        return;
+    }
     os  << "    adhesiveWallInteraction mass balance [kg]" << nl
         << "      - injected                    = " << injected << nl
+        << "      - initial                     = " << initial << nl
         << "      - airborne                    = " << airborne << nl
         << "      - captured                    = " << captured << nl
         << "      - escaped                     = " << escaped << nl
-        << "      - injected - (airborne + captured + escaped) = "
+        << "      - injected + initial - (airborne + captured + escaped) = "
         << residual << nl;
 
     if (massBalanceFile_)
     {
         *massBalanceFile_ << compat::timeName(this->owner().mesh().time());
-        for (const scalar value : {injected, airborne, captured, escaped, residual})
+        for
+        (
+            const scalar value
+          : {injected, initial, airborne, captured, escaped, residual}
+        )
         {
             *massBalanceFile_ << '\t' << brachDunn::toText(value).c_str();
         }
         *massBalanceFile_ << endl;
+    }
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::checkCloud
+(
+    const CloudType& cloud
+) const
+{
+    using namespace adhesiveWallInteractionDetail;
+
+    // OpenFOAM's injection divides by it: stop before it does
+    const auto& constProps = cloud.constProps();
+    checkedInput::coreCall(constProps.dict(), [&]
+    {
+        brachDunn::requireAboveAtMost
+        (
+            "rho0", constProps.rho0(), 0, brachDunn::Particle::maxRho
+        );
+    });
+
+    // A collision model that handles walls keeps the parcels off the wall
+    // faces: this model would never be called there
+    const word collisionModel
+    (
+        checkedInput::find(this->dict(), "collisionModel")
+      ? checkedInput::readWord(this->dict(), "collisionModel") : word("none")
+    );
+    if (collisionModel == "pairCollision")
+    {
+        WarningInFunction
+            << "collisionModel pairCollision of cloud " << cloud.name()
+            << " handles the contacts with walls in its own wallModel: the"
+            << " parcels are kept off the wall faces, and " << typeName
+            << " is not called there. For Brach & Dunn walls set"
+            << " collisionModel none (or keep pairCollision for the"
+            << " particle-particle contacts and accept its wall model)"
+            << endl;
+    }
+
+    if constexpr (isMPPIC<typename CloudType::parcelType>::value)
+    {
+        if (!coeffs_.removeCaptured())
+        {
+            WarningInFunction
+                << "capture stick in an MPPIC cloud: OpenFOAM v1912's MPPIC"
+                << " tracking can hang on parcels left inactive on a wall"
+                << " (its own localInteraction stick does too); prefer"
+                << " capture remove" << endl;
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::restore()
+{
+    // Totals of earlier runs, and the parcels the case started with
+    forAll(statistics_.patchNames(), patch)
+    {
+        stringList stored;
+        this->getModelProperty(statistics_.patchNames()[patch], stored);
+        statistics_.restore(patch, stored);
+    }
+    string initial;
+    this->getModelProperty("initialMass", initial);
+    compat::broadcast(initial);
+    if (!initial.empty())
+    {
+        initialMass_ = std::stod(initial);
+    }
+
+    // The deposit fields must hold what the stored totals count
+    const List<fateStatistics::row> totals(statistics_.totals());
+    const scalar deposited =
+        fateStatistics::parcels(totals, fateStatistics::capture)
+      + fateStatistics::parcels(totals, fateStatistics::escape);
+    if (deposits_ && deposited > 0 && deposits_->missing().size())
+    {
+        FatalErrorInFunction
+            << "Fields " << deposits_->missing() << " are missing at time "
+            << compat::timeName(this->owner().mesh().time()) << ", where the"
+            << " stored statistics of cloud " << this->owner().name()
+            << " count " << deposited << " parcels captured or escaped"
+            << " since the start of the case: started from zero the fields"
+            << " would disagree with them. Restore the fields of this time"
+            << " (or restart from a time that has them), or set writeFields"
+            << " no" << exit(FatalError);
     }
 }
 
@@ -212,17 +320,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     {
         WarningInFunction << warning.c_str() << endl;
     }
-    if constexpr (isMPPIC<typename CloudType::parcelType>::value)
-    {
-        if (!coeffs_.removeCaptured())
-        {
-            WarningInFunction
-                << "capture stick in an MPPIC cloud: OpenFOAM v1912's MPPIC"
-                << " tracking can hang on parcels left inactive on a wall"
-                << " (its own localInteraction stick does too); prefer"
-                << " capture remove" << endl;
-        }
-    }
+    checkCloud(cloud);
     if (coeffs_.particle())
     {
         const auto& particle = *coeffs_.particle();
@@ -235,14 +333,6 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         Info<< "    " << entry.describe().c_str() << nl;
     }
 
-    // Totals of earlier runs
-    forAll(statistics_.patchNames(), patch)
-    {
-        stringList stored;
-        this->getModelProperty(statistics_.patchNames()[patch], stored);
-        statistics_.restore(patch, stored);
-    }
-
     if (coeffs_.writeFields())
     {
         deposits_ = std::make_shared<depositFields>(cloud.mesh(), cloud.name());
@@ -251,6 +341,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
             << ":nStick, escaped mass to " << cloud.name() << ":massEscape"
             << endl;
     }
+    restore();
 
     const bool files = coeffs_.writeToFile() || coeffs_.maxImpactRecords() > 0;
     if (files && Pstream::master())
@@ -274,7 +365,8 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         *massBalanceFile_
             << "# adhesiveWallInteraction mass balance of cloud "
             << cloud.name() << " at write times [kg]" << nl
-            << "# time\tinjected\tairborne\tcaptured\tescaped\tresidual" << endl;
+            << "# time\tinjected\tinitial\tairborne\tcaptured\tescaped"
+            << "\tresidual" << endl;
     }
 }
 
@@ -393,9 +485,17 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
         records_->write();
     }
 
+    // The first step fixes the initial mass; write times print the balance
+    if (this->writeTime() || !initialMass_)
+    {
+        massBalance(os, totals, this->writeTime());
+    }
     if (this->writeTime())
     {
-        massBalance(os, totals);
+        this->setModelProperty
+        (
+            "initialMass", string(brachDunn::toText(*initialMass_))
+        );
         forAll(statistics_.patchNames(), patch)
         {
             this->setModelProperty

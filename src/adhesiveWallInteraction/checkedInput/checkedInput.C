@@ -51,13 +51,16 @@ const entry& required(const dictionary& dict, const word& keyword)
 }
 
 
-//- A word OpenFOAM reads where a number was meant to be infinite or NaN
-bool namesNonFinite(const token& t)
+//- The tokens OpenFOAM reads where a number was meant to be infinite or
+//  NaN: inf, -inf (a sign and a word), nan
+bool namesNonFinite(const ITstream& tokens)
 {
-    if (!t.isWord()) return false;
-    std::string w(t.wordToken());
+    const label sign =
+        tokens.size() == 2
+     && (isPunctuation(tokens[0], '-') || isPunctuation(tokens[0], '+'));
+    if (tokens.size() != sign + 1 || !tokens[sign].isWord()) return false;
+    std::string w(tokens[sign].wordToken());
     std::transform(w.begin(), w.end(), w.begin(), ::tolower);
-    if (!w.empty() && (w[0] == '-' || w[0] == '+')) w.erase(0, 1);
     return w == "inf" || w == "infinity" || w == "nan";
 }
 
@@ -67,7 +70,7 @@ scalar numberOf(const dictionary& dict, const entry& e)
 {
     const ITstream& tokens = tokensOf(dict, e, "a number");
     const std::string text = checkedInput::entryText(e);
-    if (tokens.size() == 1 && namesNonFinite(tokens[0]))
+    if (namesNonFinite(tokens))
     {
         checkedInput::fail(dict, e.keyword(), text, "must be a finite number");
     }
@@ -98,10 +101,13 @@ std::string Foam::checkedInput::entryText(const entry& e)
     const ITstream& tokens = e.stream();
     forAll(tokens, i)
     {
-        // Spaced as written: (a b), not ( a b )
+        // Spaced as written: (a b), not ( a b ); -inf, not - inf
+        const bool sign =
+            i == 1
+         && (isPunctuation(tokens[0], '-') || isPunctuation(tokens[0], '+'));
         if
         (
-            i
+            i && !sign
          && !isPunctuation(tokens[i - 1], token::BEGIN_LIST)
          && !isPunctuation(tokens[i], token::END_LIST)
         )

@@ -1,5 +1,8 @@
 #include "depositFields.H"
 #include "releaseCompat.H"
+#include "OSspecific.H"
+
+#include <algorithm>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -8,26 +11,34 @@ namespace
 
 using namespace Foam;
 
+IOobject fieldIO(const fvMesh& mesh, const word& name)
+{
+    return IOobject
+    (
+        name,
+        compat::timeName(mesh.time()),
+        mesh,
+        IOobject::READ_IF_PRESENT,
+        IOobject::AUTO_WRITE
+    );
+}
+
+
+//- The field, read if present; missing collects those that were not
 volScalarField field
 (
     const fvMesh& mesh,
     const word& name,
-    const dimensionSet& dims
+    const dimensionSet& dims,
+    wordList& missing
 )
 {
-    return volScalarField
-    (
-        IOobject
-        (
-            name,
-            compat::timeName(mesh.time()),
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            IOobject::AUTO_WRITE
-        ),
-        mesh,
-        dimensionedScalar("zero", dims, 0)
-    );
+    const IOobject io(fieldIO(mesh, name));
+    if (!isFile(io.objectPath()))
+    {
+        missing.append(name);
+    }
+    return volScalarField(io, mesh, dimensionedScalar("zero", dims, 0));
 }
 
 } // End anonymous namespace
@@ -37,7 +48,28 @@ volScalarField field
 
 Foam::depositFields::depositFields(const fvMesh& mesh, const word& cloudName)
 :
-    massStick_(field(mesh, cloudName + ":massStick", dimMass)),
-    nStick_(field(mesh, cloudName + ":nStick", dimless)),
-    massEscape_(field(mesh, cloudName + ":massEscape", dimMass))
+    missing_(),
+    massStick_(field(mesh, cloudName + ":massStick", dimMass, missing_)),
+    nStick_(field(mesh, cloudName + ":nStick", dimless, missing_)),
+    massEscape_(field(mesh, cloudName + ":massEscape", dimMass, missing_))
 {}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::wordList Foam::depositFields::missing() const
+{
+    // Each processor reads its own files: missing on any is missing
+    wordList result;
+    for (const word& name : {massStick_.name(), nStick_.name(), massEscape_.name()})
+    {
+        bool missing =
+            std::find(missing_.begin(), missing_.end(), name) != missing_.end();
+        reduce(missing, orOp<bool>());
+        if (missing)
+        {
+            result.append(name);
+        }
+    }
+    return result;
+}

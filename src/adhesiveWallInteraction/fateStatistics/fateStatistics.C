@@ -227,6 +227,21 @@ void Foam::fateStatistics::restore(const label patch, const stringList& values)
 }
 
 
+Foam::scalar Foam::fateStatistics::parcels
+(
+    const List<row>& totals,
+    const fate outcome
+)
+{
+    scalar sum = 0;
+    for (const row& r : totals)
+    {
+        sum += r[outcome].parcels;
+    }
+    return sum;
+}
+
+
 Foam::scalar Foam::fateStatistics::mass
 (
     const List<row>& totals,

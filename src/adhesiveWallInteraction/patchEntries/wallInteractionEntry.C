@@ -1,8 +1,8 @@
 #include "wallInteractionEntry.H"
 #include "checkedInput.H"
-#include "Tuple2.H"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 // * * * * * * * * * * * * * * * Local Classes * * * * * * * * * * * * * * //
@@ -48,19 +48,43 @@ protected:
     {
         const entry* e = checkedInput::find(dict_, keyword);
         if (!e) return std::nullopt;
+        const std::string form =
+            "must be a list of (speed value) pairs such as ((0 1) (10 0.9))";
         if (e->isDict())
         {
-            checkedInput::fail
-            (
-                dict_, keyword, "{ ... }",
-                "must be a list of (speed value) pairs, not a dictionary"
-            );
+            checkedInput::fail(dict_, keyword, "{ ... }", form);
         }
-        const List<Tuple2<scalar, scalar>> pairs(e->stream());
-        brachDunn::Table table;
-        for (const auto& pair : pairs)
+
+        // ((s v) (s v) ...), read token by token: anything else is an error
+        const ITstream& tokens = e->stream();
+        const auto punctuation = [&](const label i, const char c)
         {
-            table.push_back({pair.first(), pair.second()});
+            return
+                i < tokens.size() && tokens[i].isPunctuation()
+             && tokens[i].pToken() == c;
+        };
+        const auto number = [&](const label i)
+        {
+            return
+                i < tokens.size() && tokens[i].isNumber()
+             && std::isfinite(tokens[i].number());
+        };
+        brachDunn::Table table;
+        label i = checkedInput::listStart(tokens);
+        bool good = i >= 0;
+        for (++i; good && !punctuation(i, token::END_LIST); i += 4)
+        {
+            good =
+                punctuation(i, token::BEGIN_LIST) && number(i + 1)
+             && number(i + 2) && punctuation(i + 3, token::END_LIST);
+            if (good)
+            {
+                table.push_back({tokens[i + 1].number(), tokens[i + 2].number()});
+            }
+        }
+        if (!good || i + 1 != tokens.size())
+        {
+            checkedInput::fail(dict_, keyword, checkedInput::entryText(*e), form);
         }
         return table;
     }
@@ -97,6 +121,12 @@ const Foam::wordList Foam::wallInteractionEntry::interactionNames
 };
 
 
+const Foam::wordList Foam::wallInteractionEntry::constraintPatchTypes
+{
+    "symmetry", "symmetryPlane", "wedge"
+};
+
+
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
 
 brachDunn::ElasticMaterial Foam::readElasticMaterial(const dictionary& dict)
@@ -122,6 +152,7 @@ Foam::wallInteractionEntry::wallInteractionEntry
 :
     name_(name),
     type_(interaction::none),
+    patchType_(),
     e_(1),
     mu_(0)
 {
@@ -143,6 +174,12 @@ Foam::wallInteractionEntry::wallInteractionEntry
     }
     type_ = static_cast<interaction>(found - interactionNames.begin());
 
+    // Constraint patches of this type are the entry's too (opt-in)
+    patchType_ = checkedInput::readWord
+    (
+        dict, "patchType", word::null, constraintPatchTypes
+    );
+
     // The entries with coefficients take only their own keywords, so that a
     // misspelt one is not ignored; stick, escape and none read nothing, and
     // may keep an adhesive entry's coefficients while cases are compared
@@ -150,7 +187,8 @@ Foam::wallInteractionEntry::wallInteractionEntry
     {
         checkedInput::requireKnownKeywords
         (
-            dict, {"type", "e", "mu"}, "patch entries of type rebound"
+            dict, {"type", "patchType", "e", "mu"},
+            "patch entries of type rebound"
         );
 
         // As standardWallInteraction: e in [0, 1], mu a loss fraction in [0, 1]
@@ -168,8 +206,8 @@ Foam::wallInteractionEntry::wallInteractionEntry
         (
             dict,
             {
-                "type", "E", "nu", "restitution", "adhesion", "friction",
-                "momentCoeff", "minReboundSpeed"
+                "type", "patchType", "E", "nu", "restitution", "adhesion",
+                "friction", "momentCoeff", "minReboundSpeed"
             },
             "patch entries of type adhesive"
         );
@@ -212,6 +250,10 @@ Foam::string Foam::wallInteractionEntry::describe() const
 {
     std::ostringstream os;
     os << name_.c_str() << ": " << typeName().c_str();
+    if (!patchType_.empty())
+    {
+        os << " (also on " << patchType_.c_str() << " patches)";
+    }
     if (type_ == interaction::rebound)
     {
         os << " (e " << e_ << ", mu " << mu_ << ")";

@@ -42,7 +42,37 @@ PtrList<entry> patchEntries(const dictionary& coeffs)
             coeffs, "patches", "missing", std::string("give a list ") + form
         );
     }
-    if (e->isDict() || checkedInput::listStart(e->stream()) < 0)
+    // ( name { ... } name { ... } ), checked token by token before
+    // OpenFOAM's list reader sees it
+    const auto isPunctuation = [](const token& t, const char c)
+    {
+        return t.isPunctuation() && t.pToken() == c;
+    };
+    bool good = !e->isDict();
+    label i = good ? checkedInput::listStart(e->stream()) : -1;
+    good = i >= 0;
+    if (good)
+    {
+        const ITstream& tokens = e->stream();
+        for (++i; good && i < tokens.size() && !isPunctuation(tokens[i], token::END_LIST);)
+        {
+            // A name, then a dictionary in braces
+            good =
+                (tokens[i].isWord() || tokens[i].isString())
+             && i + 1 < tokens.size()
+             && isPunctuation(tokens[i + 1], token::BEGIN_BLOCK);
+            label depth = 0;
+            for (i += 1; good && i < tokens.size(); ++i)
+            {
+                depth += isPunctuation(tokens[i], token::BEGIN_BLOCK);
+                depth -= isPunctuation(tokens[i], token::END_BLOCK);
+                if (!depth) { ++i; break; }
+            }
+            good = good && !depth;
+        }
+        good = good && i + 1 == tokens.size();
+    }
+    if (!good)
     {
         checkedInput::fail
         (
@@ -50,20 +80,7 @@ PtrList<entry> patchEntries(const dictionary& coeffs)
             std::string("must be a list ") + form
         );
     }
-    PtrList<entry> list(e->stream());
-    for (const entry& item : list)
-    {
-        if (!item.isDict())
-        {
-            checkedInput::fail
-            (
-                coeffs, "patches", checkedInput::entryText(item),
-                "entry " + item.keyword() + " must be a dictionary: "
-              + item.keyword() + " { type ...; }"
-            );
-        }
-    }
-    return list;
+    return PtrList<entry>(e->stream());
 }
 
 } // End anonymous namespace
@@ -156,7 +173,11 @@ Foam::wallInteractionEntryList::wallInteractionEntryList
             if (matches(name, patches[patchi]))
             {
                 matched = true;
-                if (patchEntry_[patchi] < 0 && !patches[patchi].constraint)
+                // Constraint patches only when the entry takes on their type
+                const patch& p = patches[patchi];
+                const bool eligible =
+                    !p.constraint || p.type == entries_[entryi].patchType();
+                if (patchEntry_[patchi] < 0 && eligible)
                 {
                     patchEntry_[patchi] = entryi;
                     used = true;
@@ -175,8 +196,10 @@ Foam::wallInteractionEntryList::wallInteractionEntryList
             warnings_.push_back
             (
                 "The entry " + name + " of " + coeffs.name() + " is never"
-                " used: the patches it matches are constraint patches or"
-                " matched by an earlier entry (the first match applies)"
+                " used: the patches it matches are constraint patches (an"
+                " entry takes on symmetry, symmetryPlane or wedge patches"
+                " with patchType) or matched by an earlier entry (the first"
+                " match applies)"
             );
         }
     }
@@ -185,16 +208,20 @@ Foam::wallInteractionEntryList::wallInteractionEntryList
     forAll(patches, patchi)
     {
         const patch& p = patches[patchi];
-        if (p.constraint)
+        const wallInteractionEntry* e = entryOf(patchi);
+        if (p.constraint && !e)
         {
             continue;
         }
-        const wallInteractionEntry* e = entryOf(patchi);
         if (!e)
         {
             unmatched += (unmatched.empty() ? "" : " ") + p.name;
         }
-        else if (e->type() == wallInteractionEntry::interaction::none)
+        else if
+        (
+            !p.constraint
+         && e->type() == wallInteractionEntry::interaction::none
+        )
         {
             warnings_.push_back
             (

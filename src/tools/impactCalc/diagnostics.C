@@ -32,10 +32,14 @@ void Foam::writeDiagnostics
     const scalar un = v*std::cos(radians);
     const scalar ut = v*std::sin(radians);
 
+    const std::vector<std::pair<std::string, std::string>> optionOf
+    {
+        {"d", "diameters"}, {"rho", "rho"}, {"un", "speeds"}, {"ut", "speeds"}
+    };
     const brachDunn::ImpactResult r =
-        tools::coreCall([&]{ return model.impact(particle, un, ut); });
+        tools::coreCall([&]{ return model.impact(particle, un, ut); }, optionOf);
     const brachDunn::HertzContact h =
-        tools::coreCall([&]{ return model.hertz(particle, un); });
+        tools::coreCall([&]{ return model.hertz(particle, un); }, optionOf);
 
     // W_A from the model, or from a measured rebound (Eq. 18)
     scalar WA = r.WA, gamma = r.gamma, unOut = r.unOut, utOut = r.utOut;

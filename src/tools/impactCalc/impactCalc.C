@@ -141,7 +141,10 @@ void sweep
                 const wallImpact r = tools::coreCall
                 (
                     [&]{ return entry.impact(d, rho, U, nw); },
-                    {{"d", "diameters"}, {"rho", "rho"}}
+                    {
+                        {"d", "diameters"}, {"rho", "rho"}, {"un", "speeds"},
+                        {"ut", "speeds"}
+                    }
                 );
                 const bool captured = r.outcome == wallImpact::fate::capture;
                 os  << d << ',' << v << ',' << angle << ',' << r.un << ','
@@ -292,7 +295,7 @@ int main(int argc, char *argv[])
     std::unique_ptr<std::ofstream> file;
     if (tools::found(args, "output"))
     {
-        file = std::make_unique<std::ofstream>(tools::text(args, "output"));
+        file = std::make_unique<std::ofstream>(tools::fileOption(args, "output"));
         if (!file->good())
         {
             FatalErrorInFunction
@@ -358,7 +361,7 @@ int main(int argc, char *argv[])
         }
         tools::plot
         (
-            fileName(tools::text(args, "plot")),
+            tools::fileOption(args, "plot"),
             series,
             critical
           ? "set key outside right\nset grid\nset logscale x\n"

@@ -56,7 +56,7 @@ namespace
 std::vector<brachDunn::Measurement> readImpacts(const fileName& file)
 {
     std::ifstream in(file);
-    if (!in.good())
+    if (!isFile(file) || !in.good())
     {
         FatalErrorInFunction
             << "Option -data " << file.c_str() << ": cannot read this file"
@@ -109,8 +109,9 @@ std::vector<brachDunn::Measurement> readImpacts(const fileName& file)
     }
     if (data.empty())
     {
-        FatalErrorInFunction << "No impacts in " << file.c_str() << nl
-            << exit(FatalError);
+        FatalErrorInFunction
+            << "Option -data " << file.c_str() << ": no impacts in this file"
+            << nl << exit(FatalError);
     }
     return data;
 }
@@ -229,7 +230,7 @@ int main(int argc, char *argv[])
     // floating-point traps (OpenFOAM's FOAM_SIGFPE) here
     fedisableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
 
-    const fileName dataFile(tools::text(args, "data"));
+    const fileName dataFile(tools::fileOption(args, "data"));
     const std::vector<brachDunn::Measurement> data = readImpacts(dataFile);
 
     // Materials from the case's adhesive entry when -patch is given;
@@ -266,10 +267,36 @@ int main(int argc, char *argv[])
     s.restitutionType = tools::wordOption(args, "restitution", "powerLaw");
     s.adhesionType = tools::wordOption(args, "adhesion", "powerLaw");
     s.refine = !tools::found(args, "noRefine");
+    tools::coreCall
+    (
+        [&]{ s.particle.check(); }, {{"E", "particleE"}, {"nu", "particleNu"}}
+    );
+    tools::coreCall
+    (
+        [&]{ s.wall.check(); }, {{"E", "wallE"}, {"nu", "wallNu"}}
+    );
 
+    // An error of a data line names the file; one of a setting its option
     const brachDunn::ImpactFitResult fit = tools::coreCall
     (
-        [&]{ return brachDunn::fitImpacts(data, s); },
+        [&]
+        {
+            try
+            {
+                return brachDunn::fitImpacts(data, s);
+            }
+            catch (const brachDunn::InputError& err)
+            {
+                if (err.keyword().find("(line ") == std::string::npos)
+                {
+                    throw;
+                }
+                FatalErrorInFunction
+                    << dataFile.c_str() << ' ' << err.what() << nl
+                    << exit(FatalError);
+                throw;
+            }
+        },
         {
             {"rho", "rho"}, {"minSpeed", "minSpeed"},
             {"restitution", "restitution"}, {"adhesion", "adhesion"}
@@ -301,7 +328,7 @@ int main(int argc, char *argv[])
 
     if (tools::found(args, "plot"))
     {
-        plot(fileName(tools::text(args, "plot")), data, fit, s);
+        plot(tools::fileOption(args, "plot"), data, fit, s);
     }
     return 0;
 }
