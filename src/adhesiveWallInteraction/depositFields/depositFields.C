@@ -34,7 +34,7 @@ volScalarField field
 )
 {
     const IOobject io(fieldIO(mesh, name));
-    if (!isFile(io.objectPath()))
+    if (!isFile(compat::objectPath(io)))
     {
         missing.append(name);
     }
