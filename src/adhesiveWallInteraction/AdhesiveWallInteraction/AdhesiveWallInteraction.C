@@ -3,72 +3,6 @@
 #include "OSspecific.H"
 #include "wallPolyPatch.H"
 
-#include <type_traits>
-#include <utility>
-
-// * * * * * * * * * * * * * * * Local Helpers * * * * * * * * * * * * * * //
-
-namespace Foam
-{
-namespace adhesiveWallInteractionDetail
-{
-
-//- Parcels of colliding clouds carry angular momentum (and their cloud's
-//  constant properties carry youngsModulus and poissonsRatio)
-template<class Parcel, class = void>
-struct isColliding : std::false_type {};
-
-template<class Parcel>
-struct isColliding
-<
-    Parcel,
-    std::void_t<decltype(std::declval<Parcel&>().angularMomentum())>
->
-: std::true_type {};
-
-//- Parcels of MPPIC clouds carry a velocity correction
-template<class Parcel, class = void>
-struct isMPPIC : std::false_type {};
-
-template<class Parcel>
-struct isMPPIC
-<
-    Parcel,
-    std::void_t<decltype(std::declval<Parcel&>().UCorrect())>
->
-: std::true_type {};
-
-//- The particle's elastic constants a colliding cloud holds
-template<class CloudType>
-std::optional<brachDunn::ElasticMaterial> cloudParticle(const CloudType& cloud)
-{
-    if constexpr (isColliding<typename CloudType::parcelType>::value)
-    {
-        const auto& props = cloud.constProps();
-        return brachDunn::ElasticMaterial
-        {
-            props.youngsModulus(), props.poissonsRatio()
-        };
-    }
-    return std::nullopt;
-}
-
-//- The injector identifiers of a cloud
-template<class CloudType>
-labelList injectorIds(const CloudType& cloud)
-{
-    labelList ids;
-    for (const auto& injector : cloud.injectors())
-    {
-        ids.append(compat::injectorId(injector));
-    }
-    return ids;
-}
-
-} // End namespace adhesiveWallInteractionDetail
-} // End namespace Foam
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
@@ -134,123 +68,6 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
 
 
 template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::massBalance
-(
-    Ostream& os,
-    const List<fateStatistics::row>& totals,
-    const bool printBalance
-)
-{
-    scalar injected = 0;
-    for (const auto& injector : this->owner().injectors())
-    {
-        injected += injector.massInjected();
-    }
-
-    scalar airborne = 0;
-    for (const auto& p : this->owner())
-    {
-        if (compat::isActive(p))
-        {
-            airborne += p.nParticle()*p.mass();
-        }
-    }
-    reduce(airborne, sumOp<scalar>());
-
-    const scalar captured = fateStatistics::mass(totals, fateStatistics::capture);
-    const scalar escaped = fateStatistics::mass(totals, fateStatistics::escape);
-
-    // The parcels the run started with (mapped, read, a previous stage):
-    // what the cloud held at the end of the first step beyond what the
-    // injectors gave
-    if (!initialMass_)
-    {
-        initialMass_ = airborne + captured + escaped - injected;
-    }
-    const scalar initial = *initialMass_;
-    const scalar residual = injected + initial - (airborne + captured + escaped);
-
-    if (!printBalance)
-    {
-        return;
-    }
-    os  << "    adhesiveWallInteraction mass balance [kg]" << nl
-        << "      - injected                    = " << injected << nl
-        << "      - initial                     = " << initial << nl
-        << "      - airborne                    = " << airborne << nl
-        << "      - captured                    = " << captured << nl
-        << "      - escaped                     = " << escaped << nl
-        << "      - injected + initial - (airborne + captured + escaped) = "
-        << residual << nl;
-
-    if (massBalanceFile_)
-    {
-        *massBalanceFile_ << compat::timeName(this->owner().mesh().time());
-        for
-        (
-            const scalar value
-          : {injected, initial, airborne, captured, escaped, residual}
-        )
-        {
-            *massBalanceFile_ << '\t' << brachDunn::toText(value).c_str();
-        }
-        *massBalanceFile_ << endl;
-    }
-}
-
-
-template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::checkCloud
-(
-    const CloudType& cloud
-) const
-{
-    using namespace adhesiveWallInteractionDetail;
-
-    // OpenFOAM's injection divides by it: stop before it does
-    const auto& constProps = cloud.constProps();
-    checkedInput::coreCall(constProps.dict(), [&]
-    {
-        brachDunn::requireAboveAtMost
-        (
-            "rho0", constProps.rho0(), 0, brachDunn::Particle::maxRho
-        );
-    });
-
-    // A collision model that handles walls keeps the parcels off the wall
-    // faces: this model would never be called there
-    const word collisionModel
-    (
-        checkedInput::find(this->dict(), "collisionModel")
-      ? checkedInput::readWord(this->dict(), "collisionModel") : word("none")
-    );
-    if (collisionModel == "pairCollision")
-    {
-        WarningInFunction
-            << "collisionModel pairCollision of cloud " << cloud.name()
-            << " handles the contacts with walls in its own wallModel: the"
-            << " parcels are kept off the wall faces, and " << typeName
-            << " is not called there. For Brach & Dunn walls set"
-            << " collisionModel none (or keep pairCollision for the"
-            << " particle-particle contacts and accept its wall model)"
-            << endl;
-    }
-
-    if constexpr (isMPPIC<typename CloudType::parcelType>::value)
-    {
-        if (!coeffs_.removeCaptured())
-        {
-            WarningInFunction
-                << "capture stick in an MPPIC cloud: OpenFOAM v1912's MPPIC"
-                << " tracking can hang on parcels left inactive on a wall"
-                << " (its own localInteraction stick does too); prefer"
-                << " capture remove" << endl;
-        }
-    }
-}
-
-
-template<class CloudType>
 void Foam::AdhesiveWallInteraction<CloudType>::restore()
 {
     // Totals of earlier runs, and the parcels the case started with
@@ -263,10 +80,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::restore()
     string initial;
     this->getModelProperty("initialMass", initial);
     compat::broadcast(initial);
-    if (!initial.empty())
-    {
-        initialMass_ = std::stod(initial);
-    }
+    balance_.restore(initial);
 
     // The deposit fields must hold what the stored totals count
     const List<fateStatistics::row> totals(statistics_.totals());
@@ -302,7 +116,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     (
         this->coeffs(),
         wallInteractionEntryList::patchesOf(compat::boundaryMesh(cloud.mesh())),
-        adhesiveWallInteractionDetail::cloudParticle(cloud),
+        wallInteractionCloud::particle(cloud),
         compat::baseKeywords()
     ),
     statistics_
@@ -310,17 +124,15 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         coeffs_.entries().patchNames(),
         coeffs_.entries().handled(),
         coeffs_.outputByInjectorId()
-      ? adhesiveWallInteractionDetail::injectorIds(cloud) : labelList(),
+      ? wallInteractionCloud::injectorIds(cloud) : labelList(),
         coeffs_.sizeClassEdges()
     )
 {
-    using namespace adhesiveWallInteractionDetail;
-
     for (const std::string& warning : coeffs_.entries().warnings())
     {
         WarningInFunction << warning.c_str() << endl;
     }
-    checkCloud(cloud);
+    wallInteractionCloud::check(cloud, this->dict(), typeName);
     if (coeffs_.particle())
     {
         const auto& particle = *coeffs_.particle();
@@ -361,12 +173,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     {
         statisticsFile_ = std::make_shared<OFstream>(outputDir()/"statistics.dat");
         statistics_.writeHeader(*statisticsFile_, cloud.name());
-        massBalanceFile_ = std::make_shared<OFstream>(outputDir()/"massBalance.dat");
-        *massBalanceFile_
-            << "# adhesiveWallInteraction mass balance of cloud "
-            << cloud.name() << " at write times [kg]" << nl
-            << "# time\tinjected\tinitial\tairborne\tcaptured\tescaped"
-            << "\tresidual" << endl;
+        balance_.writeTo(outputDir()/"massBalance.dat", cloud.name());
     }
 }
 
@@ -382,8 +189,8 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
 )
 {
     using fate = wallImpact::fate;
-    using namespace adhesiveWallInteractionDetail;
-    constexpr bool colliding = isColliding<typename CloudType::parcelType>::value;
+    constexpr bool colliding =
+        wallInteractionCloud::isColliding<typename CloudType::parcelType>::value;
 
     const wallInteractionEntry* entry = coeffs_.entries().entryOf(pp.index());
     if (!entry)
@@ -486,16 +293,20 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
     }
 
     // The first step fixes the initial mass; write times print the balance
-    if (this->writeTime() || !initialMass_)
+    if (this->writeTime() || !balance_.started())
     {
-        massBalance(os, totals, this->writeTime());
+        balance_.update
+        (
+            wallInteractionCloud::injectedMass(this->owner()),
+            wallInteractionCloud::airborneMass(this->owner()),
+            fateStatistics::mass(totals, fateStatistics::capture),
+            fateStatistics::mass(totals, fateStatistics::escape)
+        );
     }
     if (this->writeTime())
     {
-        this->setModelProperty
-        (
-            "initialMass", string(brachDunn::toText(*initialMass_))
-        );
+        balance_.write(os, compat::timeName(this->owner().mesh().time()));
+        this->setModelProperty("initialMass", balance_.storedText());
         forAll(statistics_.patchNames(), patch)
         {
             this->setModelProperty

@@ -227,31 +227,17 @@ void Foam::fateStatistics::restore(const label patch, const stringList& values)
 }
 
 
-Foam::scalar Foam::fateStatistics::parcels
+Foam::scalar Foam::fateStatistics::total
 (
     const List<row>& totals,
-    const fate outcome
+    const fate outcome,
+    scalar sums::*quantity
 )
 {
     scalar sum = 0;
     for (const row& r : totals)
     {
-        sum += r[outcome].parcels;
-    }
-    return sum;
-}
-
-
-Foam::scalar Foam::fateStatistics::mass
-(
-    const List<row>& totals,
-    const fate outcome
-)
-{
-    scalar sum = 0;
-    for (const row& r : totals)
-    {
-        sum += r[outcome].mass;
+        sum += r[outcome].*quantity;
     }
     return sum;
 }
