@@ -237,3 +237,32 @@ TEST(InputChecks, Impacts)
         "|n|", "0"
     );
 }
+
+
+// The rule each check states: a value that is not finite is said to be so
+// whatever the check, and a range names its bounds with their open or
+// closed ends
+TEST(InputChecks, RequirementTexts)
+{
+    const auto requirementOf = [](const std::function<void()>& call)
+    {
+        try
+        {
+            call();
+        }
+        catch (const InputError& err)
+        {
+            return err.requirement();
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(requirementOf([]{ requirePositive("k", infinity); }), "must be a finite number");
+    EXPECT_EQ(requirementOf([]{ requireInRange("p", notANumber, 0, 10); }), "must be a finite number");
+    EXPECT_EQ(requirementOf([]{ requireFinite("zeta", -infinity); }), "must be a finite number");
+    EXPECT_EQ(requirementOf([]{ requirePositive("k", 0); }), "must be > 0");
+    EXPECT_EQ(requirementOf([]{ requireNonNegative("mu", -1); }), "must be >= 0");
+    EXPECT_EQ(requirementOf([]{ requireInRange("f", 2, 0, 1); }), "must be in [0, 1]");
+    EXPECT_EQ(requirementOf([]{ requireAboveAtMost("h", 0, 0, 1e-14); }), "must be in (0, 1e-14]");
+    EXPECT_EQ(requirementOf([]{ requireInRange("f", 1, 0, 1); }), "no error");
+    EXPECT_EQ(requirementOf([]{ requireAboveAtMost("h", 1e-14, 0, 1e-14); }), "no error");
+}

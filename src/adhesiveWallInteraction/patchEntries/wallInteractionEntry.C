@@ -285,23 +285,29 @@ Foam::wallImpact Foam::wallInteractionEntry::impact
     using fate = wallImpact::fate;
 
     wallImpact out;
-    const scalar Un = U & nw;
-    const vector Ut = U - Un*nw;
-    out.un = Un;
-    out.ut = mag(Ut);
+    const auto components = [&]()
+    {
+        out.un = U & nw;
+        out.ut = mag(U - out.un*nw);
+    };
 
     switch (type_)
     {
         case interaction::escape:
+            components();
             out.outcome = fate::escape;
             break;
 
         case interaction::stick:
+            components();
             out.outcome = fate::capture;
             break;
 
         case interaction::rebound:
         {
+            components();
+            const scalar Un = out.un;
+            const vector Ut = U - Un*nw;
             // standardWallInteraction's rebound: U -= (1 + e) Un n towards
             // the wall, U -= mu Ut always
             out.outcome = fate::rebound;
