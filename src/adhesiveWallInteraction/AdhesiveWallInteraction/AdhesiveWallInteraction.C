@@ -39,9 +39,9 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
         Foam::atan2(impact.ut, impact.un)*180/constant::mathematical::pi
     );
 
+    const label facei = pp.whichFace(p.face());
     if (deposits_ && impact.outcome != fate::rebound)
     {
-        const label facei = pp.whichFace(p.face());
         if (impact.outcome == fate::capture)
         {
             deposits_->addCapture(pp.index(), facei, mass, nParticle);
@@ -58,7 +58,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
         records_->add
         ({
             time.value() - (1 - p.stepFraction())*time.deltaTValue(),
-            pp.index(), pp.whichFace(p.face()),
+            pp.index(), facei,
             compat::position(p, this->owner().mesh()),
             p.d(), nParticle, impact.un, impact.ut, outcome,
             impact.R, impact.WA, impact.unOut, impact.utOut

@@ -285,29 +285,31 @@ Foam::wallImpact Foam::wallInteractionEntry::impact
     using fate = wallImpact::fate;
 
     wallImpact out;
-    const auto components = [&]()
+    // The normal and tangential parts, where the core does not give them
+    const auto tangential = [&]()
     {
         out.un = U & nw;
-        out.ut = mag(U - out.un*nw);
+        const vector Ut = U - out.un*nw;
+        out.ut = mag(Ut);
+        return Ut;
     };
 
     switch (type_)
     {
         case interaction::escape:
-            components();
+            tangential();
             out.outcome = fate::escape;
             break;
 
         case interaction::stick:
-            components();
+            tangential();
             out.outcome = fate::capture;
             break;
 
         case interaction::rebound:
         {
-            components();
+            const vector Ut = tangential();
             const scalar Un = out.un;
-            const vector Ut = U - Un*nw;
             // standardWallInteraction's rebound: U -= (1 + e) Un n towards
             // the wall, U -= mu Ut always
             out.outcome = fate::rebound;
