@@ -1,3 +1,4 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 // Cost of one impact evaluation of the core, per restitution x adhesion law
 // combination, beside the classical rebound arithmetic of OpenFOAM's
 // standardWallInteraction (U -= (1 + e) Un n; U -= mu Ut) as the baseline.

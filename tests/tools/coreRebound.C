@@ -1,3 +1,4 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 // The core's prediction of one impact, for the case tests to compare the
 // solver with: velocity after impact in the global frame.
 //

@@ -1,3 +1,4 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 // Critical (capture) speeds of the paper's Figure 5 (NH4-fluorescein on
 // molybdenum, normal impact, Eq. 23 for R, Eq. 24 for gamma), against the
 // values recomputed in doc/model-notes.md and the paper's text

@@ -1,3 +1,4 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 // Physical identities that hold for every law combination: the energy
 // balance of Eq. 17, impulse-momentum, the sticking condition, and frame
 // invariance of the 3D form.

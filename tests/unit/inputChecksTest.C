@@ -1,3 +1,4 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 // Every bad input raises an InputError that names the keyword and the value.
 
 #include "testCases.H"

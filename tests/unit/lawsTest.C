@@ -1,3 +1,4 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 // Each restitution, adhesion and friction law on its own, and their
 // selection by name as the dictionaries use it.
 

@@ -1,3 +1,4 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 // Limits the model must reach: elastic conservation, the continuous approach
 // to capture, the classical rebound of OpenFOAM's standardWallInteraction,
 // the friction regimes and the rebound floor.

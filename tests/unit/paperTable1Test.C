@@ -1,3 +1,4 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's Table 1 impact (4.90 um NH4-fluorescein on molybdenum,
 // v_n = 8.23 m/s, measured V_n = 6.50 m/s), against the values recomputed
 // independently in doc/model-notes.md, to 3 significant figures.

@@ -1,3 +1,4 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 // A million impacts over wide ranges of every input and every law: no NaN
 // or infinity, no negative energy loss, no outgoing speed above the incoming.
 

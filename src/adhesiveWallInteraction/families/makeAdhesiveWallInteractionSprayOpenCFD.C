@@ -1,3 +1,4 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 // adhesiveWallInteraction for the clouds of type basicSprayCloud
 // (lagrangian/spray: sprayFoam and its relatives)
 #include "basicSprayCloud.H"

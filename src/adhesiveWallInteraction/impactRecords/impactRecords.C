@@ -1,3 +1,4 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 #include "impactRecords.H"
 #include "Pstream.H"
 #include "releaseCompat.H"

@@ -1,3 +1,4 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 #include "wallInteractionCoeffs.H"
 #include "checkedInput.H"
 #include "releaseCompat.H"
