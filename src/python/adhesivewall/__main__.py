@@ -1,0 +1,69 @@
+# adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
+"""adhesiveWallPost COMMAND [ARGUMENTS]: the package from the shell.
+
+Commands:
+  bendDeposition [CASE]      post-processing of the tutorials (their
+  fibreFilter [CASE]         Allrun.post): results.csv, log.table, plots
+  microsphereImpact [CASE]
+
+  compare CASE REFERENCE     the files under the folder REFERENCE against
+                             those of CASE: tables by column name, numbers
+                             to 1e-12 relative, other files line for line
+                             (tests/golden); exit status 1 on a difference
+
+  check SUBCOMMAND ...       the case tests' checks (adhesiveWallPost check
+                             -help lists them)
+
+  bendPositions N            the rows of the bend's positions files (N
+                             parcels, flow-weighted over the inlet)
+  microsphereParcels N       the rows of microsphereImpact's parcel tables
+                             (N speeds per diameter of figure5.csv)
+"""
+
+import sys
+
+
+def main(argv=None):
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if not argv or argv[0] in ("-h", "-help", "--help"):
+        print(__doc__)
+        return 0 if argv else 1
+    command, arguments = argv[0], argv[1:]
+    if command in TUTORIALS:
+        module = __import__("adhesivewall.tutorials." + TUTORIALS[command],
+                            fromlist=["run"])
+        module.run(*arguments)
+        return 0
+    if command == "check":
+        from . import checks
+        return checks.main(arguments)
+    if command == "compare" and len(arguments) == 2:
+        from . import tables
+        problems = tables.compare_folders(*arguments)
+        print("\n".join(problems) if problems else
+              f"{arguments[0]}: the same as {arguments[1]}")
+        return 1 if problems else 0
+    if command == "bendPositions" and len(arguments) == 1:
+        from .tutorials import bend_deposition
+        print("\n".join(bend_deposition.flow_weighted_positions(
+            int(arguments[0]), 2.5e-3, "-0.0145")))
+        return 0
+    if command == "microsphereParcels" and len(arguments) == 1:
+        from .tutorials import microsphere_impact
+        from . import tables
+        print("\n".join(microsphere_impact.parcel_rows(
+            tables.read("figure5.csv"), int(arguments[0]))))
+        return 0
+    print(f"adhesiveWallPost: unknown command '{command}'\n{__doc__}",
+          file=sys.stderr)
+    return 1
+
+
+TUTORIALS = {
+    "bendDeposition": "bend_deposition",
+    "fibreFilter": "fibre_filter",
+    "microsphereImpact": "microsphere_impact",
+}
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,83 @@
+# adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
+"""The tutorials' own computations, on inputs whose answer is known."""
+
+import math
+
+import pytest
+
+from adhesivewall import tables
+from adhesivewall.tutorials import bend_deposition as bend
+
+A, RB = 2.5e-3, 5.7 * 2.5e-3
+
+
+@pytest.mark.parametrize("where, point, expected", [
+    ("inlet, outer wall", (-0.005, -A, 0), (-0.005, 0)),
+    ("bend at 45 deg, outer wall",
+     ((RB + A) * math.sin(math.pi / 4), RB - (RB + A) * math.cos(math.pi / 4),
+      0), (RB * math.pi / 4, 0)),
+    ("bend at 45 deg, inner wall",
+     ((RB - A) * math.sin(math.pi / 4), RB - (RB - A) * math.cos(math.pi / 4),
+      0), (RB * math.pi / 4, 180)),
+    ("bend at 30 deg, +z", (RB * 0.5, RB - RB * math.sqrt(3) / 2, A),
+     (RB * math.pi / 6, 90)),
+    ("outlet, outer wall", (RB + A, RB + 0.01, 0), (RB * math.pi / 2 + 0.01, 0)),
+])
+def test_bend_wall_unrolled(where, point, expected):
+    s, phi = bend.unrolled(*point, RB)
+    assert s == pytest.approx(expected[0], abs=1e-12), where
+    assert abs(phi) == pytest.approx(expected[1], abs=1e-9), where
+
+
+def test_deposition_map_holds_every_capture(tmp_path):
+    # density x bin area summed over the map gives back the captures on the
+    # walls (none on other patches, no rebounds)
+    path = tmp_path / "impacts.csv"
+    rows = ["patch,x,y,z,outcome"]
+    for i in range(36):
+        theta = (i + 0.5) / 36 * math.pi / 2
+        phi = 2 * math.pi * i / 36
+        radial, z = A * math.cos(phi), A * math.sin(phi)
+        x = (RB + radial) * math.sin(theta)
+        y = RB - (RB + radial) * math.cos(theta)
+        rows.append(f"bendWall,{x!r},{y!r},{z!r},capture")
+    rows.append("bendWall,0.001,0,0.0025,rebound")
+    rows.append("outlet,0.0143,0.03,0,escape")
+    path.write_text("\n".join(rows) + "\n")
+    density = bend.deposition_map(tables.read(path), A, RB)
+    ds = RB * math.pi / 2 / bend.MAP_BINS_BEND
+    total = 0
+    for s, phi, n in density:
+        area = A * math.radians(bend.MAP_ANGLE_BIN) * ds
+        if 0 < s * 1e-3 < RB * math.pi / 2:
+            area *= 1 + A * math.cos(math.radians(phi)) / RB
+        total += n * area * 1e6
+    assert total == pytest.approx(36, rel=1e-12)
+
+
+def test_yardstick_of_the_measured_curve_itself(tmp_path):
+    measured = tables.read_text(
+        "Stk,efficiencyPercent\n0.17,5.3\n0.28,24.5\n0.37,63.2\n0.57,84.9\n"
+        "0.90,94.8\n1.24,94.2\n")
+    simulated = tables.read_text("Stk,efficiencyPercent\n0.28,33.16\n")
+    lines = ["Stk,model,bendPercent"] + [
+        f"{s},stick,{p}" for s, p in zip(measured.text("Stk"),
+                                         measured.text("efficiencyPercent"))]
+    same = tables.read_text("\n".join(lines) + "\n")
+    judged = {row[0]: row for row in bend.yardstick(same, measured, simulated)}
+    assert judged["Stk50"][4] == pytest.approx(0, abs=1e-12)
+    assert judged["StkAt63.2"][4] == pytest.approx(0, abs=1e-12)
+    assert judged["at1.24"][4] == pytest.approx(0, abs=1e-12)
+    assert judged["vasquezAt0.28"][4] == pytest.approx(24.5 - 33.16)
+    assert bend.verdict(judged["vasquezAt0.28"][4], 3) == "fail"
+    assert bend.verdict(judged["Stk50"][4], 0.1) == "pass"
+    assert bend.verdict(None, 0.1) == "fail"
+    assert bend.verdict(judged["tail0.17"][4], None) == "reported"
+    # a curve shifted 20 % in Stk misses the 15 % of StkAt and 10 % of Stk50
+    lines = ["Stk,model,bendPercent"] + [
+        f"{1.2 * s},stick,{p}" for s, p in zip(measured["Stk"],
+                                               measured["efficiencyPercent"])]
+    shifted = {row[0]: row for row in bend.yardstick(
+        tables.read_text("\n".join(lines) + "\n"), measured, simulated)}
+    assert shifted["Stk50"][4] == pytest.approx(0.2)
+    assert bend.verdict(shifted["StkAt24.5"][4], 0.15) == "fail"
