@@ -11,6 +11,12 @@ Commands:
                              to 1e-12 relative, other files line for line
                              (tests/golden); exit status 1 on a difference
 
+  sizeClasses CASE [CLOUD [PATCH...]]
+                             per size class of the model's statistics at
+                             their last time: impacts, rebounds, captures,
+                             escapes (particles) and the fraction captured,
+                             as CSV; sizeClasses.png in the current folder
+
   check SUBCOMMAND ...       the case tests' checks (adhesiveWallPost check
                              -help lists them)
 
@@ -33,6 +39,17 @@ def main(argv=None):
         module = __import__("adhesivewall.tutorials." + TUTORIALS[command],
                             fromlist=["run"])
         module.run(*arguments)
+        return 0
+    if command == "sizeClasses" and arguments:
+        from . import statistics, tables
+        case, cloud = arguments[0], (arguments[1:2] or ["kinematicCloud"])[0]
+        classes = statistics.size_classes(
+            statistics.read_statistics(case, cloud), arguments[2:] or None)
+        print(",".join(classes.names))
+        for row in classes.rows:
+            print(",".join(row))
+        statistics.plot_size_classes("sizeClasses.png", classes,
+                                     f"{case}: {cloud}")
         return 0
     if command == "check":
         from . import checks

@@ -40,3 +40,51 @@ def final(statistics, column, **rows):
     if not len(selected):
         raise KeyError(f"{statistics.source}: no rows {rows} at the last time")
     return selected.sum(column)
+
+
+SIZE_CLASS_COLUMNS = ["dMin", "dMax", "impactParticles", "reboundParticles",
+                      "captureParticles", "escapeParticles",
+                      "captureFraction"]
+
+
+def size_classes(statistics, patches=None):
+    """Per size class (dMin, dMax) of the statistics at their last time,
+    summed over the patches given (all by default) and over injectors: the
+    particles that hit a wall, rebounded, were captured and escaped, and
+    the fraction of the impacts captured. A Table, in order of dMin."""
+    last = statistics.last_time()
+    if patches is not None:
+        last = last.where(patch=lambda p: p in patches)
+        if not len(last):
+            raise KeyError(f"{statistics.source}: no rows of {patches}")
+    classes = sorted(set(zip(last.text("dMin"), last.text("dMax"))),
+                     key=lambda c: float(c[0]))
+    rows = []
+    for lo, hi in classes:
+        of = last.where(dMin=lo, dMax=hi)
+        impacts = of.sum("impactParticles")
+        captured = of.sum("captureParticles")
+        rows.append([lo, hi, "%.17g" % impacts,
+                     "%.17g" % of.sum("reboundParticles"),
+                     "%.17g" % captured, "%.17g" % of.sum("escapeParticles"),
+                     "%.6g" % (captured / impacts) if impacts else "nan"])
+    return tables.Table(SIZE_CLASS_COLUMNS, rows, statistics.source)
+
+
+def plot_size_classes(path, classes, title=""):
+    """The fraction of the impacts captured per size class, against the
+    class's diameters [um] (a bar per class)."""
+    from . import plots
+    import numpy as np
+    lo = classes["dMin"] * 1e6
+    hi = classes["dMax"] * 1e6
+    finite = np.isfinite(hi)
+    hi = np.where(finite, hi, lo * 2 if lo.max() > 0 else 1)
+    fig, ax = plots.figure(8, 5)
+    ax.bar(lo, classes["captureFraction"], width=hi - lo, align="edge",
+           edgecolor="k", alpha=0.7)
+    ax.set_xlabel("particle diameter [um] (size class)")
+    ax.set_ylabel("captured / impacts")
+    ax.set_ylim(0, 1.05)
+    ax.set_title(title)
+    plots.save(fig, path)
