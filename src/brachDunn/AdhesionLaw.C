@@ -1,16 +1,76 @@
 // adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 #include "AdhesionLaw.H"
-#include "Selection.H"
 
-#include <sstream>
+#include <algorithm>
 
 namespace brachDunn
 {
-
-namespace
+namespace adhesion
 {
 
-AdhesionLaw vanDerWaalsFrom(const Parameters& parameters)
+Constant Constant::make(double gamma)
+{
+    requireInRange("gamma", gamma, 0, maxGamma);
+    return {gamma};
+}
+
+
+std::vector<double> Constant::initialGuess
+(
+    const std::vector<double>&,
+    const std::vector<double>& gammas
+)
+{
+    double sum = 0;
+    for (const double gamma : gammas) sum += gamma;
+    return {std::clamp(sum/gammas.size(), 0.0, maxGamma)};
+}
+
+
+PowerLaw PowerLaw::make(double c, double n)
+{
+    requireInRange("c", c, 0, maxGamma);
+    requireInRange("n", n, 0, maxExponent);
+    return {c, n};
+}
+
+
+std::vector<double> PowerLaw::initialGuess
+(
+    const std::vector<double>& speeds,
+    const std::vector<double>& gammas
+)
+{
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int count = 0;
+    for (std::size_t i = 0; i < gammas.size(); ++i)
+    {
+        if (!(gammas[i] > 0)) continue;
+        const double x = std::log(speeds[i]), y = std::log(gammas[i]);
+        sx += x; sy += y; sxx += x*x; sxy += x*y; ++count;
+    }
+    const double slope =
+        count > 1 && count*sxx - sx*sx > 0
+      ? (count*sxy - sx*sy)/(count*sxx - sx*sx) : 0.5;
+    const double intercept = count ? (sy - slope*sx)/count : -1;
+    return
+    {
+        std::clamp(std::exp(intercept), 1e-300, maxGamma),
+        std::clamp(slope, 0.0, maxExponent)
+    };
+}
+
+
+VanDerWaals VanDerWaals::make(double h, double z, double f)
+{
+    requireAboveAtMost("h", h, 0, maxH);
+    requireInRange("z", z, minZ, maxZ);
+    requireInRange("f", f, 0, 1);
+    return {h, z, f};
+}
+
+
+VanDerWaals VanDerWaals::read(const Parameters& parameters)
 {
     const auto h = parameters.find("h");
     const auto A = parameters.find("A");
@@ -31,8 +91,8 @@ AdhesionLaw vanDerWaalsFrom(const Parameters& parameters)
             " or the Hamaker constant A [J]"
         );
     }
-    if (A) requireAboveAtMost("A", *A, 0, AdhesionLaw::maxHamaker);
-    return AdhesionLaw::vanDerWaals
+    if (A) requireAboveAtMost("A", *A, 0, maxHamaker);
+    return make
     (
         h ? *h : 4*pi*(*A)/3,
         parameters.getOrDefault("z", 4e-10),
@@ -40,91 +100,5 @@ AdhesionLaw vanDerWaalsFrom(const Parameters& parameters)
     );
 }
 
-//- The laws by type name, in the order of AdhesionLaw::Law
-const Selector<AdhesionLaw> selectors[] =
-{
-    {"none", [](const Parameters&) { return AdhesionLaw::none(); }},
-    {"constant", [](const Parameters& p)
-        { return AdhesionLaw::constant(p.get("gamma")); }},
-    {"powerLaw", [](const Parameters& p)
-        { return AdhesionLaw::powerLaw(p.get("c"), p.get("n")); }},
-    {"vanDerWaals", vanDerWaalsFrom},
-};
-
-} // End anonymous namespace
-
-
-AdhesionLaw AdhesionLaw::none()
-{
-    return AdhesionLaw(None{});
-}
-
-
-AdhesionLaw AdhesionLaw::constant(double gamma)
-{
-    requireInRange("gamma", gamma, 0, maxGamma);
-    return AdhesionLaw(Constant{gamma});
-}
-
-
-AdhesionLaw AdhesionLaw::powerLaw(double c, double n)
-{
-    requireInRange("c", c, 0, maxGamma);
-    requireInRange("n", n, 0, maxExponent);
-    return AdhesionLaw(PowerLaw{c, n});
-}
-
-
-AdhesionLaw AdhesionLaw::vanDerWaals(double h, double z, double f)
-{
-    requireAboveAtMost("h", h, 0, maxH);
-    requireInRange("z", z, minZ, maxZ);
-    requireInRange("f", f, 0, 1);
-    return AdhesionLaw(VanDerWaals{h, z, f});
-}
-
-
-AdhesionLaw AdhesionLaw::select
-(
-    const std::string& type,
-    const Parameters& parameters
-)
-{
-    return selectByName(selectors, "adhesion law", type, parameters);
-}
-
-
-const std::vector<std::string>& AdhesionLaw::typeNames()
-{
-    static const std::vector<std::string> names = selectorNames(selectors);
-    return names;
-}
-
-
-const std::string& AdhesionLaw::typeName() const
-{
-    return typeNames()[law_.index()];
-}
-
-
-std::string AdhesionLaw::describe() const
-{
-    std::ostringstream os;
-    os.precision(6);
-    os << "type " << typeName() << ";";
-    if (const auto* law = as<Constant>())
-    {
-        os << " gamma " << law->gamma << ";";
-    }
-    else if (const auto* law = as<PowerLaw>())
-    {
-        os << " c " << law->c << "; n " << law->n << ";";
-    }
-    else if (const auto* law = as<VanDerWaals>())
-    {
-        os << " h " << law->h << "; z " << law->z << "; f " << law->f << ";";
-    }
-    return os.str();
-}
-
+} // End namespace adhesion
 } // End namespace brachDunn

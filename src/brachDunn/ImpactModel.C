@@ -38,6 +38,52 @@ ImpactModel::ImpactModel
 }
 
 
+void ImpactModel::captured
+(
+    ImpactResult& res,
+    const double m,
+    const double elasticKE
+) const
+{
+    const double un = res.un, ut = res.ut;
+    res.outcome = Fate::capture;
+    res.unOut = 0;
+    res.utOut = 0;
+    res.spinOut = 0;
+    res.normalImpulse = m*un;
+    res.tangentialImpulse = m*ut;
+    // ut/un, without overflowing for a grazing capture
+    constexpr double largest = std::numeric_limits<double>::max();
+    res.impulseRatio = (un >= 1 || ut <= un*largest) ? ut/un : largest;
+    res.adhesionLoss = elasticKE;
+    res.frictionLoss = 0.5*m*ut*ut;
+    res.energyLoss = 0.5*m*un*un + res.frictionLoss;
+}
+
+
+void ImpactModel::rebound(ImpactResult& res, const Particle& particle) const
+{
+    const double m = particle.mass(), r = particle.radius();
+    const double un = res.un, ut = res.ut;
+    res.outcome = Fate::rebound;
+    res.normalImpulse = m*(un + res.unOut);
+
+    // The friction law's impulse, at most the m ut that stops the sliding
+    res.tangentialImpulse =
+        friction_.tangentialImpulse(m, ut, res.normalImpulse);
+    res.utOut =
+        res.tangentialImpulse < m*ut ? ut - res.tangentialImpulse/m : 0;
+    res.impulseRatio = res.tangentialImpulse/res.normalImpulse;
+
+    // Omega = -e_m (omega + r P_t/I), with r P_t/I = (5/2)(ut - Ut')/r
+    res.spinOut = -momentCoeff_*(res.spin + 2.5*(ut - res.utOut)/r);
+
+    res.adhesionLoss = -res.WA;
+    res.frictionLoss = 0.5*m*(ut*ut - res.utOut*res.utOut);
+    res.energyLoss = res.deformationLoss + res.adhesionLoss + res.frictionLoss;
+}
+
+
 ImpactResult ImpactModel::impact
 (
     const Particle& particle,
@@ -59,7 +105,7 @@ ImpactResult ImpactModel::impact
     if (!(un > 0))
     {
         // Moving away from (or along) the wall: left alone
-        res.outcome = Outcome::notApproaching;
+        res.outcome = Fate::notApproaching;
         res.unOut = -un;
         res.utOut = ut;
         res.spinOut = spin;
@@ -73,7 +119,7 @@ ImpactResult ImpactModel::impact
     res.R = restitution_(un, particle.rho, contactModulus_);
     // The contact radius (a pow) only when there is adhesion to use it
     const AdhesionLaw::Work work =
-        adhesion_.as<AdhesionLaw::None>()
+        adhesion_.as<adhesion::None>()
       ? AdhesionLaw::Work{0, 0}
       : adhesion_(un, contactRadiusSqr(r, normalKE), r);
     res.gamma = work.gamma;
@@ -98,47 +144,12 @@ ImpactResult ImpactModel::impact
 
     if (res.cause != CaptureCause::none)
     {
-        res.outcome = Outcome::captured;
-        res.unOut = 0;
-        res.utOut = 0;
-        res.spinOut = 0;
-        res.normalImpulse = m*un;
-        res.tangentialImpulse = m*ut;
-        // ut/un, without overflowing for a grazing capture
-        constexpr double largest = std::numeric_limits<double>::max();
-        res.impulseRatio = (un >= 1 || ut <= un*largest) ? ut/un : largest;
-        res.adhesionLoss = elasticKE;
-        res.frictionLoss = 0.5*m*ut*ut;
-        res.energyLoss = normalKE + res.frictionLoss;
-        return res;
-    }
-
-    res.outcome = Outcome::rebound;
-    res.normalImpulse = m*(un + res.unOut);
-
-    // Sliding stops (sticking) unless the Coulomb limit is reached first
-    const auto* coulomb = friction_.as<FrictionLaw::Coulomb>();
-    const double slidingImpulse =
-        coulomb ? coulomb->mu*res.normalImpulse : m*ut;
-    if (slidingImpulse < m*ut)
-    {
-        res.tangentialImpulse = slidingImpulse;
-        res.utOut = ut - slidingImpulse/m;
+        captured(res, m, elasticKE);
     }
     else
     {
-        res.tangentialImpulse = m*ut;
-        res.utOut = 0;
+        rebound(res, particle);
     }
-    res.impulseRatio = res.tangentialImpulse/res.normalImpulse;
-
-    // Omega = -e_m (omega + r P_t/I), with r P_t/I = (5/2)(ut - Ut')/r
-    res.spinOut = -momentCoeff_*(spin + 2.5*(ut - res.utOut)/r);
-
-    res.adhesionLoss = -res.WA;
-    res.frictionLoss = 0.5*m*(ut*ut - res.utOut*res.utOut);
-    res.energyLoss = res.deformationLoss + res.adhesionLoss + res.frictionLoss;
-
     return res;
 }
 
@@ -198,15 +209,16 @@ Impact3D ImpactModel::impact
 
     switch (out.result.outcome)
     {
-        case Outcome::notApproaching:
+        case Fate::notApproaching:
             out.U = U;
             out.omega = omega;
             break;
-        case Outcome::captured:
-            break;
-        case Outcome::rebound:
+        case Fate::rebound:
             out.U = out.result.unOut*normal + out.result.utOut*t;
             out.omega = omega + (out.result.spinOut - spin)*b;
+            break;
+        case Fate::capture:
+        case Fate::escape:
             break;
     }
     return out;
@@ -253,6 +265,18 @@ AdhesionLaw::Work ImpactModel::measuredAdhesion
     const double WA = normalKE*(ratio*ratio - R*R);
 
     return {-WA/(pi*contactRadiusSqr(r, normalKE)), WA};
+}
+
+
+double ImpactModel::surfaceEnergy(const Particle& particle, double un) const
+{
+    particle.check();
+    requireAboveAtMost("un", un, 0, maxSpeed);
+    const double r = particle.radius();
+    return adhesion_
+    (
+        un, contactRadiusSqr(r, 0.5*particle.mass()*un*un), r
+    ).gamma;
 }
 
 

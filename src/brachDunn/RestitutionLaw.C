@@ -1,18 +1,91 @@
 // adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 #include "RestitutionLaw.H"
-#include "Selection.H"
 #include "Materials.H"
 
 #include <algorithm>
-#include <sstream>
 
 namespace brachDunn
+{
+namespace restitution
 {
 
 namespace
 {
 
-RestitutionLaw elasticPlasticFrom(const Parameters& parameters)
+//- The median of values (not empty)
+double median(std::vector<double> values)
+{
+    std::sort(values.begin(), values.end());
+    return values[values.size()/2];
+}
+
+} // End anonymous namespace
+
+
+Constant Constant::make(double R)
+{
+    requireInRange("R", R, 0, 1);
+    return {R};
+}
+
+
+std::vector<double> Constant::initialGuess
+(
+    const std::vector<double>&,
+    const std::vector<double>& ratios
+)
+{
+    return {std::clamp(median(ratios), 0.0, 1.0)};
+}
+
+
+PowerLaw PowerLaw::make(double k, double p)
+{
+    requirePositive("k", k);
+    // Larger exponents have no physical meaning and would overflow un^p
+    requireInRange("p", p, 0, maxExponent);
+    return {k, p};
+}
+
+
+std::vector<double> PowerLaw::initialGuess
+(
+    const std::vector<double>& speeds,
+    const std::vector<double>& ratios
+)
+{
+    const double R = std::clamp(median(ratios), 0.05, 0.99);
+    const double p = 0.7;
+    return {R*std::pow(median(speeds), p)/(1 - R), p};
+}
+
+
+ViscousDamping ViscousDamping::make(double zeta)
+{
+    requireFinite("zeta", zeta);
+    if (!(zeta >= 0 && zeta < 1))
+    {
+        throw InputError("zeta", toText(zeta), "must be in [0, 1)");
+    }
+    return {zeta, std::exp(-pi*zeta/std::sqrt(1 - zeta*zeta))};
+}
+
+
+ElasticPlastic ElasticPlastic::fromYieldVelocity(double vy)
+{
+    requirePositive("yieldVelocity", vy);
+    return {vy, 0};
+}
+
+
+ElasticPlastic ElasticPlastic::fromYieldStress(double py)
+{
+    requireAboveAtMost("yieldStress", py, 0, ElasticMaterial::maxE);
+    return {0, py};
+}
+
+
+ElasticPlastic ElasticPlastic::read(const Parameters& parameters)
 {
     const auto vy = parameters.find("yieldVelocity");
     const auto py = parameters.find("yieldStress");
@@ -25,8 +98,8 @@ RestitutionLaw elasticPlasticFrom(const Parameters& parameters)
             "give either yieldVelocity or yieldStress, not both"
         );
     }
-    if (vy) return RestitutionLaw::elasticPlasticYieldVelocity(*vy);
-    if (py) return RestitutionLaw::elasticPlasticYieldStress(*py);
+    if (vy) return fromYieldVelocity(*vy);
+    if (py) return fromYieldStress(*py);
     throw InputError
     (
         "yieldVelocity",
@@ -35,68 +108,52 @@ RestitutionLaw elasticPlasticFrom(const Parameters& parameters)
     );
 }
 
-//- The laws by type name
-const Selector<RestitutionLaw> selectors[] =
+
+void ElasticPlastic::write(std::ostream& os) const
 {
-    {"constant", [](const Parameters& p)
-        { return RestitutionLaw::constant(p.get("R")); }},
-    {"powerLaw", [](const Parameters& p)
-        { return RestitutionLaw::powerLaw(p.get("k"), p.get("p")); }},
-    {"viscousDamping", [](const Parameters& p)
-        { return RestitutionLaw::viscousDamping(p.get("zeta")); }},
-    {"elasticPlastic", elasticPlasticFrom},
-    {"table", [](const Parameters& p)
-        { return RestitutionLaw::table(p.getTable("values")); }},
-};
-
-} // End anonymous namespace
-
-
-RestitutionLaw RestitutionLaw::constant(double R)
-{
-    requireInRange("R", R, 0, 1);
-    return RestitutionLaw(Constant{R});
-}
-
-
-RestitutionLaw RestitutionLaw::powerLaw(double k, double p)
-{
-    requirePositive("k", k);
-    // Larger exponents have no physical meaning and would overflow un^p
-    requireInRange("p", p, 0, maxExponent);
-    return RestitutionLaw(PowerLaw{k, p});
-}
-
-
-RestitutionLaw RestitutionLaw::viscousDamping(double zeta)
-{
-    requireFinite("zeta", zeta);
-    if (!(zeta >= 0 && zeta < 1))
+    if (yieldStress > 0)
     {
-        throw InputError("zeta", toText(zeta), "must be in [0, 1)");
+        os << " yieldStress " << yieldStress << ";";
     }
-    return RestitutionLaw
-    (
-        ViscousDamping{zeta, std::exp(-pi*zeta/std::sqrt(1 - zeta*zeta))}
-    );
+    else
+    {
+        os << " yieldVelocity " << yieldVelocity << ";";
+    }
 }
 
 
-RestitutionLaw RestitutionLaw::elasticPlasticYieldVelocity(double vy)
+double ElasticPlastic::velocity
+(
+    double yieldStress,
+    double rho,
+    double contactModulus
+)
 {
-    requirePositive("yieldVelocity", vy);
-    return RestitutionLaw(ElasticPlastic{vy});
+    // sqrt(pi^4/40) sqrt(py^5/(E*^4 rho)), as py (py/E*)^4 so that no power
+    // of a pressure overflows
+    const double ratio = yieldStress/contactModulus;
+    const double ratio2 = ratio*ratio;
+    return std::sqrt(pi*pi*pi*pi/40)*std::sqrt(yieldStress*ratio2*ratio2/rho);
 }
 
 
-RestitutionLaw RestitutionLaw::elasticPlasticYieldStress(double py)
+double ElasticPlastic::restitution(double yieldVelocity, double un)
 {
-    requireAboveAtMost("yieldStress", py, 0, ElasticMaterial::maxE);
-    return RestitutionLaw(ElasticPlasticFromStress{py});
+    if (!(un > yieldVelocity))
+    {
+        return 1;
+    }
+    // Thornton (1997): R = 1 at x = 1, falling as (x)^(1/4) for x -> 0
+    const double x = yieldVelocity/un;
+    const double first = std::sqrt(6*std::sqrt(3.0)/5);
+    const double second = std::sqrt(1 - x*x/6);
+    const double third =
+        std::pow(x/(x + 2*std::sqrt(6.0/5 - x*x/5)), 0.25);
+    return std::min(1.0, first*second*third);
 }
 
 
-RestitutionLaw RestitutionLaw::table(const Table& speedAndR)
+Tabulated Tabulated::make(const Table& speedAndR)
 {
     if (speedAndR.empty())
     {
@@ -119,114 +176,23 @@ RestitutionLaw RestitutionLaw::table(const Table& speedAndR)
         table.speeds.push_back(speed);
         table.values.push_back(R);
     }
-    return RestitutionLaw(std::move(table));
+    return table;
 }
 
 
-RestitutionLaw RestitutionLaw::select
-(
-    const std::string& type,
-    const Parameters& parameters
-)
+void Tabulated::write(std::ostream& os) const
 {
-    return selectByName(selectors, "restitution law", type, parameters);
-}
-
-
-const std::vector<std::string>& RestitutionLaw::typeNames()
-{
-    static const std::vector<std::string> names = selectorNames(selectors);
-    return names;
-}
-
-
-const std::string& RestitutionLaw::typeName() const
-{
-    // Both elasticPlastic forms are one type name
-    static const std::size_t index[] = {0, 1, 2, 3, 3, 4};
-    return typeNames()[index[law_.index()]];
-}
-
-
-std::string RestitutionLaw::describe() const
-{
-    std::ostringstream os;
-    os.precision(6);
-    os << "type " << typeName() << ";";
-    if (const auto* law = as<Constant>())
+    os << " values (";
+    for (std::size_t i = 0; i < speeds.size(); ++i)
     {
-        os << " R " << law->R << ";";
+        os << (i ? " " : "") << "(" << speeds[i] << " " << values[i] << ")";
     }
-    else if (const auto* law = as<PowerLaw>())
-    {
-        os << " k " << law->k << "; p " << law->p << ";";
-    }
-    else if (const auto* law = as<ViscousDamping>())
-    {
-        os << " zeta " << law->zeta << ";";
-    }
-    else if (const auto* law = as<ElasticPlastic>())
-    {
-        os << " yieldVelocity " << law->yieldVelocity << ";";
-    }
-    else if (const auto* law = as<ElasticPlasticFromStress>())
-    {
-        os << " yieldStress " << law->yieldStress << ";";
-    }
-    else if (const auto* law = as<Tabulated>())
-    {
-        os << " values (";
-        for (std::size_t i = 0; i < law->speeds.size(); ++i)
-        {
-            os << (i ? " " : "") << "(" << law->speeds[i] << " "
-               << law->values[i] << ")";
-        }
-        os << ");";
-    }
-    return os.str();
+    os << ");";
 }
 
 
-double RestitutionLaw::thornton(double x)
+double Tabulated::operator()(double un, double, double) const
 {
-    // Thornton (1997): R = 1 at x = 1, falling as (x)^(1/4) for x -> 0
-    const double first = std::sqrt(6*std::sqrt(3.0)/5);
-    const double second = std::sqrt(1 - x*x/6);
-    const double third =
-        std::pow(x/(x + 2*std::sqrt(6.0/5 - x*x/5)), 0.25);
-    return first*second*third;
-}
-
-
-double RestitutionLaw::yieldVelocity
-(
-    double yieldStress,
-    double rho,
-    double contactModulus
-)
-{
-    // sqrt(pi^4/40) sqrt(py^5/(E*^4 rho)), as py (py/E*)^4 so that no power
-    // of a pressure overflows
-    const double ratio = yieldStress/contactModulus;
-    const double ratio2 = ratio*ratio;
-    return std::sqrt(pi*pi*pi*pi/40)*std::sqrt(yieldStress*ratio2*ratio2/rho);
-}
-
-
-double RestitutionLaw::elasticPlastic(double yieldVelocity, double un)
-{
-    if (!(un > yieldVelocity))
-    {
-        return 1;
-    }
-    return std::min(1.0, thornton(yieldVelocity/un));
-}
-
-
-double RestitutionLaw::tabulated(const Tabulated& table, double un)
-{
-    const std::vector<double>& speeds = table.speeds;
-    const std::vector<double>& values = table.values;
     if (un <= speeds.front()) return values.front();
     if (un >= speeds.back()) return values.back();
     const auto upper =
@@ -236,4 +202,5 @@ double RestitutionLaw::tabulated(const Tabulated& table, double un)
     return (1 - w)*values[upper - 1] + w*values[upper];
 }
 
+} // End namespace restitution
 } // End namespace brachDunn

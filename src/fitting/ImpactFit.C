@@ -14,14 +14,100 @@ namespace
 
 using Eigen::VectorXd;
 
-//- Keep the law types to the two the fits know
-void checkType(const char* keyword, const std::string& type)
+//- The law of a family chosen for a fit and its parameters theta: the
+//  coefficient values, through their logarithm for those fitted so (to stay
+//  positive), as the law type's coefficient table says
+template<class Family>
+struct FittedLaw
 {
-    if (type != "powerLaw" && type != "constant")
+    LawFitting<Family> fitting;
+
+    FittedLaw(const std::string& type, const char* keyword)
+    :
+        fitting(Family::fitting(type, keyword))
+    {}
+
+    int size() const { return fitting.coefficients.size(); }
+
+    std::vector<double> values(const VectorXd& theta) const
     {
-        throw InputError(keyword, type, "valid fits: powerLaw, constant");
+        std::vector<double> v(size());
+        for (int i = 0; i < size(); ++i)
+        {
+            v[i] =
+                fitting.coefficients[i].logarithmic
+              ? std::exp(theta(i)) : theta(i);
+        }
+        return v;
     }
-}
+
+    VectorXd theta(const std::vector<double>& values) const
+    {
+        VectorXd t(size());
+        for (int i = 0; i < size(); ++i)
+        {
+            t(i) =
+                fitting.coefficients[i].logarithmic
+              ? std::log(values[i]) : values[i];
+        }
+        return t;
+    }
+
+    //- Whether theta lies in the coefficients' ranges, where the law is
+    //  defined (a trial step beyond is rejected)
+    bool inRange(const VectorXd& theta) const
+    {
+        const std::vector<double> v = values(theta);
+        for (int i = 0; i < size(); ++i)
+        {
+            const Coefficient& c = fitting.coefficients[i];
+            if (!(std::isfinite(v[i]) && v[i] >= c.min && v[i] <= c.max))
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    Family law(const VectorXd& theta) const
+    {
+        return fitting.law(values(theta).data());
+    }
+
+    //- Starting parameters from (speed, value) samples
+    VectorXd initial
+    (
+        const std::vector<double>& speeds,
+        const std::vector<double>& samples
+    ) const
+    {
+        return theta(fitting.initialGuess(speeds, samples));
+    }
+
+    //- Fill a LawFit: a coefficient fitted through its logarithm is
+    //  reported with its delta-method standard error
+    void report
+    (
+        LawFit& fit,
+        const VectorXd& theta,
+        const VectorXd& standardErrors
+    ) const
+    {
+        fit.type = fitting.type;
+        fit.names.clear();
+        fit.values = values(theta);
+        fit.standardErrors.clear();
+        for (int i = 0; i < size(); ++i)
+        {
+            fit.names.push_back(fitting.coefficients[i].name);
+            fit.standardErrors.push_back
+            (
+                fitting.coefficients[i].logarithmic
+              ? fit.values[i]*standardErrors(i) : standardErrors(i)
+            );
+        }
+    }
+};
 
 
 //- An InputError when a fit leaves a coefficient undetermined
@@ -43,36 +129,6 @@ void requireDetermined
             " faster than the restitution law allows); try another law or"
             " minSpeed"
         );
-    }
-}
-
-
-//- Fill a LawFit from fitted parameters. A power law's first coefficient
-//  (k or c) was fitted through its logarithm, to stay positive: report it
-//  with its delta-method standard error
-void report
-(
-    LawFit& fit,
-    const std::string& type,
-    const std::vector<std::string>& powerLawNames,
-    const std::vector<std::string>& constantNames,
-    const VectorXd& theta,
-    const VectorXd& standardErrors
-)
-{
-    fit.type = type;
-    if (type == "powerLaw")
-    {
-        const double scale = std::exp(theta(0));
-        fit.names = powerLawNames;
-        fit.values = {scale, theta(1)};
-        fit.standardErrors = {scale*standardErrors(0), standardErrors(1)};
-    }
-    else
-    {
-        fit.names = constantNames;
-        fit.values = {theta(0)};
-        fit.standardErrors = {standardErrors(0)};
     }
 }
 
@@ -110,153 +166,107 @@ VectorXd measuredRatios(const std::vector<Measurement>& impacts)
 }
 
 
-//- The restitution law of fitted parameters: (log k, p) or (R)
-RestitutionLaw restitutionLaw(const VectorXd& theta)
+std::vector<double> speeds(const std::vector<Measurement>& impacts)
 {
-    return
-        theta.size() == 2
-      ? RestitutionLaw::powerLaw(std::exp(theta(0)), theta(1))
-      : RestitutionLaw::constant(std::clamp(theta(0), 0.0, 1.0));
+    std::vector<double> v;
+    for (const Measurement& m : impacts) v.push_back(m.speedIn);
+    return v;
 }
 
 
-//- The adhesion law of fitted parameters: (log c, n) or (gamma); none
-//  before the first fit
-AdhesionLaw adhesionLaw(const VectorXd& theta)
+std::vector<double> values(const VectorXd& v)
 {
-    if (theta.size() == 0) return AdhesionLaw::none();
-    return
-        theta.size() == 2
-      ? AdhesionLaw::powerLaw(std::exp(theta(0)), std::max(theta(1), 0.0))
-      : AdhesionLaw::constant(std::max(theta(0), 0.0));
+    return std::vector<double>(v.data(), v.data() + v.size());
 }
 
 
-//- The model's rebound ratio of each impact for the laws of these
-//  parameters; HUGE_VAL for every impact when a trial step leaves the
-//  laws' range (p < 0, or an exponent that would overflow)
-VectorXd modelRatios
-(
-    const std::vector<Measurement>& impacts,
-    const VectorXd& restitutionTheta,
-    const VectorXd& adhesionTheta,
-    const ImpactFitSettings& s
-)
+//- The laws fitted, the materials, and what the fits compare
+struct FitProblem
 {
-    VectorXd ratios(impacts.size());
-    for (const VectorXd* theta : {&restitutionTheta, &adhesionTheta})
+    const ImpactFitSettings& s;
+    FittedLaw<RestitutionLaw> restitution;
+    FittedLaw<AdhesionLaw> adhesion;
+
+    //- The model of these parameters (no adhesion before its first fit:
+    //  an empty adhesion theta), sticking friction, no contact moment, no
+    //  rebound floor
+    ImpactModel model
+    (
+        const VectorXd& restitutionTheta,
+        const VectorXd& adhesionTheta
+    ) const
     {
-        if (theta->size() == 2 && !((*theta)(0) < 700 && std::abs((*theta)(1)) < 50))
+        return ImpactModel
+        (
+            s.particle, s.wall, restitution.law(restitutionTheta),
+            adhesionTheta.size()
+          ? adhesion.law(adhesionTheta) : AdhesionLaw::none(),
+            FrictionLaw::sticking(), -1, 0
+        );
+    }
+
+    //- f(model, particle, speed) of each impact under the laws of these
+    //  parameters; HUGE_VAL for every impact when they leave the laws'
+    //  ranges (a trial step the fit then rejects)
+    template<class Quantity>
+    VectorXd evaluate
+    (
+        const std::vector<Measurement>& impacts,
+        const VectorXd& restitutionTheta,
+        const VectorXd& adhesionTheta,
+        const Quantity& quantity
+    ) const
+    {
+        VectorXd result(impacts.size());
+        if
+        (
+            !restitution.inRange(restitutionTheta)
+         || (adhesionTheta.size() && !adhesion.inRange(adhesionTheta))
+        )
         {
             return VectorXd::Constant(impacts.size(), HUGE_VAL);
         }
-    }
-    try
-    {
-        const ImpactModel model
-        (
-            s.particle, s.wall, restitutionLaw(restitutionTheta),
-            adhesionLaw(adhesionTheta), FrictionLaw::sticking(), -1, 0
-        );
-        for (std::size_t i = 0; i < impacts.size(); ++i)
+        try
         {
-            const Measurement& m = impacts[i];
-            ratios(i) = model.impact(Particle{m.d, s.rho}, m.speedIn, 0).unOut/m.speedIn;
+            const ImpactModel m = model(restitutionTheta, adhesionTheta);
+            for (std::size_t i = 0; i < impacts.size(); ++i)
+            {
+                const Measurement& x = impacts[i];
+                result(i) = quantity(m, Particle{x.d, s.rho}, x);
+            }
         }
+        catch (const InputError&)
+        {
+            result.setConstant(HUGE_VAL);
+        }
+        return result;
     }
-    catch (const InputError&)
-    {
-        ratios.setConstant(HUGE_VAL);
-    }
-    return ratios;
-}
 
-
-//- gamma of each rebounding impact from its measured rebound (Eqs. 18 and
-//  22) under the restitution law of these parameters
-VectorXd measuredSurfaceEnergies
-(
-    const std::vector<Measurement>& impacts,
-    const VectorXd& restitutionTheta,
-    const ImpactFitSettings& s
-)
-{
-    const ImpactModel measuring
+    // What the fits compare, per impact (for evaluate): the model's
+    // rebound ratio, gamma from a measured rebound under the restitution
+    // law (Eqs. 18 and 22), and the adhesion law's gamma
+    static double reboundRatio
     (
-        s.particle, s.wall, restitutionLaw(restitutionTheta),
-        AdhesionLaw::none(), FrictionLaw::sticking(), -1, 0
-    );
-    VectorXd gamma(impacts.size());
-    for (std::size_t i = 0; i < impacts.size(); ++i)
+        const ImpactModel& m, const Particle& p, const Measurement& x
+    )
     {
-        const Measurement& m = impacts[i];
-        gamma(i) = measuring.measuredAdhesion
-        (
-            Particle{m.d, s.rho}, m.speedIn, m.speedOut
-        ).gamma;
+        return m.impact(p, x.speedIn, 0).unOut/x.speedIn;
     }
-    return gamma;
-}
-
-
-//- gamma of the adhesion law of these parameters at each speed
-VectorXd lawSurfaceEnergies(const VectorXd& theta, const VectorXd& un)
-{
-    if (theta.size() == 2)
+    static double measuredGamma
+    (
+        const ImpactModel& m, const Particle& p, const Measurement& x
+    )
     {
-        return VectorXd(std::exp(theta(0))*un.array().pow(theta(1)));
+        return m.measuredAdhesion(p, x.speedIn, x.speedOut).gamma;
     }
-    return VectorXd::Constant(un.size(), theta(0));
-}
-
-
-//- Starting restitution parameters: the median ratio at the median speed
-VectorXd initialRestitution
-(
-    const std::vector<Measurement>& fast,
-    const std::string& type
-)
-{
-    std::vector<double> ratios;
-    for (const Measurement& m : fast) ratios.push_back(m.speedOut/m.speedIn);
-    std::sort(ratios.begin(), ratios.end());
-    const double R = std::clamp(ratios[ratios.size()/2], 0.05, 0.99);
-    if (type == "powerLaw")
+    static double lawGamma
+    (
+        const ImpactModel& m, const Particle& p, const Measurement& x
+    )
     {
-        const double v = fast[fast.size()/2].speedIn;
-        return (VectorXd(2) << std::log(R*std::pow(v, 0.7)/(1 - R)), 0.7).finished();
+        return m.surfaceEnergy(p, x.speedIn);
     }
-    return VectorXd::Constant(1, R);
-}
-
-
-//- Starting adhesion parameters: a log-log line through the positive
-//  values, or their mean
-VectorXd initialAdhesion
-(
-    const VectorXd& un,
-    const VectorXd& gamma,
-    const std::string& type
-)
-{
-    if (type != "powerLaw")
-    {
-        return VectorXd::Constant(1, std::max(gamma.mean(), 0.0));
-    }
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    int count = 0;
-    for (int i = 0; i < gamma.size(); ++i)
-    {
-        if (gamma(i) <= 0) continue;
-        const double x = std::log(un(i)), y = std::log(gamma(i));
-        sx += x; sy += y; sxx += x*x; sxy += x*y; ++count;
-    }
-    const double slope =
-        count > 1 && count*sxx - sx*sx > 0
-      ? (count*sxy - sx*sy)/(count*sxx - sx*sx) : 0.5;
-    const double intercept = count ? (sy - slope*sx)/count : -1;
-    return (VectorXd(2) << intercept, slope).finished();
-}
+};
 
 
 //- Check the measurements; split the rebounds at minSpeed and count the
@@ -264,12 +274,13 @@ VectorXd initialAdhesion
 void splitImpacts
 (
     const std::vector<Measurement>& data,
-    const ImpactFitSettings& s,
+    const FitProblem& problem,
     std::vector<Measurement>& fast,
     std::vector<Measurement>& slow,
     int& captured
 )
 {
+    const ImpactFitSettings& s = problem.s;
     captured = 0;
     for (const Measurement& m : data)
     {
@@ -314,13 +325,161 @@ void splitImpacts
     }
     requirePoints
     (
-        fast.size(), s.restitutionType == "powerLaw" ? 2 : 1,
+        fast.size(), problem.restitution.size(),
         "restitution, impacts faster than minSpeed", s.minSpeed
     );
     requirePoints
     (
-        slow.size(), s.adhesionType == "powerLaw" ? 2 : 1,
+        slow.size(), problem.adhesion.size(),
         "adhesion, impacts at or below minSpeed", s.minSpeed
+    );
+}
+
+
+//- The parameters of both laws and their fits
+struct FitState
+{
+    VectorXd restitutionTheta, adhesionTheta;
+    LeastSquares restitutionFit, adhesionFit;
+};
+
+
+//- Alternating passes (one without refine): the restitution law from the
+//  fast impacts with the adhesion found so far (none at first), then the
+//  adhesion law from the gamma of the slow ones under that restitution
+FitState alternatingFit
+(
+    const FitProblem& problem,
+    const std::vector<Measurement>& fast,
+    const std::vector<Measurement>& slow,
+    ImpactFitResult& result
+)
+{
+    const VectorXd fastRatios = measuredRatios(fast);
+    FitState f;
+    f.restitutionTheta =
+        problem.restitution.initial(speeds(fast), values(fastRatios));
+    VectorXd previous;
+    for (int pass = 0; pass < (problem.s.refine ? 30 : 1); ++pass)
+    {
+        result.iterations = pass + 1;
+        f.restitutionFit = levenbergMarquardt
+        (
+            [&](const VectorXd& t)
+            {
+                return problem.evaluate
+                (
+                    fast, t, f.adhesionTheta, FitProblem::reboundRatio
+                );
+            },
+            fastRatios,
+            f.restitutionTheta
+        );
+        requireDetermined
+        (
+            f.restitutionFit, "restitution", problem.restitution.fitting.type
+        );
+        f.restitutionTheta = f.restitutionFit.theta;
+        result.restitution.correlation =
+            pearson(fastRatios, f.restitutionFit.fitted);
+
+        const VectorXd gamma = problem.evaluate
+        (
+            slow, f.restitutionTheta, VectorXd(), FitProblem::measuredGamma
+        );
+        if (f.adhesionTheta.size() == 0)
+        {
+            f.adhesionTheta =
+                problem.adhesion.initial(speeds(slow), values(gamma));
+        }
+        f.adhesionFit = levenbergMarquardt
+        (
+            [&](const VectorXd& t)
+            {
+                return problem.evaluate
+                (
+                    slow, f.restitutionTheta, t, FitProblem::lawGamma
+                );
+            },
+            gamma,
+            f.adhesionTheta
+        );
+        requireDetermined
+        (
+            f.adhesionFit, "adhesion", problem.adhesion.fitting.type
+        );
+        f.adhesionTheta = f.adhesionFit.theta;
+        result.adhesion.correlation = pearson(gamma, f.adhesionFit.fitted);
+
+        VectorXd all(f.restitutionTheta.size() + f.adhesionTheta.size());
+        all << f.restitutionTheta, f.adhesionTheta;
+        if
+        (
+            previous.size() == all.size()
+         && (all - previous).norm() <= 1e-10*(all.norm() + 1e-10)
+        )
+        {
+            break;
+        }
+        previous = all;
+    }
+    return f;
+}
+
+
+//- Joint fit of both laws to the rebound ratio of every rebounding impact,
+//  from the alternating estimate: the least-squares estimate proper, with
+//  standard errors from the joint covariance
+void jointFit
+(
+    const FitProblem& problem,
+    const std::vector<Measurement>& fast,
+    const std::vector<Measurement>& slow,
+    FitState& f,
+    ImpactFitResult& result
+)
+{
+    std::vector<Measurement> rebounds(fast);
+    rebounds.insert(rebounds.end(), slow.begin(), slow.end());
+    const int nr = f.restitutionTheta.size(), na = f.adhesionTheta.size();
+    VectorXd theta(nr + na);
+    theta << f.restitutionTheta, f.adhesionTheta;
+    const LeastSquares joint = levenbergMarquardt
+    (
+        [&](const VectorXd& t)
+        {
+            return problem.evaluate
+            (
+                rebounds, t.head(nr), t.tail(na), FitProblem::reboundRatio
+            );
+        },
+        measuredRatios(rebounds),
+        theta
+    );
+    requireDetermined
+    (
+        joint, "restitution", problem.restitution.fitting.type
+      + " with adhesion " + problem.adhesion.fitting.type + " (joint fit)"
+    );
+    f.restitutionTheta = joint.theta.head(nr);
+    f.adhesionTheta = joint.theta.tail(na);
+    f.restitutionFit.standardErrors = joint.standardErrors.head(nr);
+    f.adhesionFit.standardErrors = joint.standardErrors.tail(na);
+
+    // Correlations as the paper reports them: rebound ratio of the fast
+    // impacts, and gamma recovered from the slow ones against the law
+    result.restitution.correlation =
+        pearson(measuredRatios(fast), joint.fitted.head(fast.size()));
+    result.adhesion.correlation = pearson
+    (
+        problem.evaluate
+        (
+            slow, f.restitutionTheta, VectorXd(), FitProblem::measuredGamma
+        ),
+        problem.evaluate
+        (
+            slow, f.restitutionTheta, f.adhesionTheta, FitProblem::lawGamma
+        )
     );
 }
 
@@ -351,122 +510,35 @@ ImpactFitResult fitImpacts
     s.wall.check();
     requirePositive("rho", s.rho);
     requirePositive("minSpeed", s.minSpeed);
-    checkType("restitution", s.restitutionType);
-    checkType("adhesion", s.adhesionType);
+    const FitProblem problem
+    {
+        s,
+        FittedLaw<RestitutionLaw>(s.restitutionType, "restitution"),
+        FittedLaw<AdhesionLaw>(s.adhesionType, "adhesion")
+    };
 
     ImpactFitResult result;
     std::vector<Measurement> fast, slow;
-    splitImpacts(data, s, fast, slow, result.captured);
+    splitImpacts(data, problem, fast, slow, result.captured);
 
-    const VectorXd fastRatios = measuredRatios(fast);
-    VectorXd slowSpeeds(slow.size());
-    for (std::size_t i = 0; i < slow.size(); ++i)
-    {
-        slowSpeeds(i) = slow[i].speedIn;
-    }
-
-    // Alternating passes (one without refine): the restitution law from the
-    // fast impacts with the adhesion found so far (none at first), then the
-    // adhesion law from the gamma of the slow ones under that restitution
-    VectorXd restitutionTheta = initialRestitution(fast, s.restitutionType);
-    VectorXd adhesionTheta;
-    LeastSquares restitutionFit, adhesionFit;
-    VectorXd previous;
-    for (int pass = 0; pass < (s.refine ? 30 : 1); ++pass)
-    {
-        result.iterations = pass + 1;
-
-        restitutionFit = levenbergMarquardt
-        (
-            [&](const VectorXd& t)
-            {
-                return modelRatios(fast, t, adhesionTheta, s);
-            },
-            fastRatios,
-            restitutionTheta
-        );
-        requireDetermined(restitutionFit, "restitution", s.restitutionType);
-        restitutionTheta = restitutionFit.theta;
-        result.restitution.correlation =
-            pearson(fastRatios, restitutionFit.fitted);
-
-        const VectorXd gamma =
-            measuredSurfaceEnergies(slow, restitutionTheta, s);
-        if (adhesionTheta.size() == 0)
-        {
-            adhesionTheta = initialAdhesion(slowSpeeds, gamma, s.adhesionType);
-        }
-        adhesionFit = levenbergMarquardt
-        (
-            [&](const VectorXd& t) { return lawSurfaceEnergies(t, slowSpeeds); },
-            gamma,
-            adhesionTheta
-        );
-        requireDetermined(adhesionFit, "adhesion", s.adhesionType);
-        adhesionTheta = adhesionFit.theta;
-        result.adhesion.correlation = pearson(gamma, adhesionFit.fitted);
-
-        VectorXd all(restitutionTheta.size() + adhesionTheta.size());
-        all << restitutionTheta, adhesionTheta;
-        if
-        (
-            previous.size() == all.size()
-         && (all - previous).norm() <= 1e-10*(all.norm() + 1e-10)
-        )
-        {
-            break;
-        }
-        previous = all;
-    }
+    FitState f = alternatingFit(problem, fast, slow, result);
     result.restitution.points = fast.size();
     result.adhesion.points = slow.size();
-
-    // Joint fit of both laws to the rebound ratio of every rebounding
-    // impact, from the alternating estimate: the least-squares estimate
-    // proper, with standard errors from the joint covariance
     if (s.refine)
     {
-        std::vector<Measurement> rebounds(fast);
-        rebounds.insert(rebounds.end(), slow.begin(), slow.end());
-        const int nr = restitutionTheta.size(), na = adhesionTheta.size();
-        VectorXd theta(nr + na);
-        theta << restitutionTheta, adhesionTheta;
-        const LeastSquares joint = levenbergMarquardt
-        (
-            [&](const VectorXd& t)
-            {
-                return modelRatios(rebounds, t.head(nr), t.tail(na), s);
-            },
-            measuredRatios(rebounds),
-            theta
-        );
-        requireDetermined
-        (
-            joint, "restitution", s.restitutionType + " with adhesion "
-          + s.adhesionType + " (joint fit)"
-        );
-        restitutionTheta = joint.theta.head(nr);
-        adhesionTheta = joint.theta.tail(na);
-        restitutionFit.standardErrors = joint.standardErrors.head(nr);
-        adhesionFit.standardErrors = joint.standardErrors.tail(na);
-
-        // Correlations as the paper reports them: rebound ratio of the fast
-        // impacts, and gamma recovered from the slow ones against the law
-        result.restitution.correlation =
-            pearson(fastRatios, joint.fitted.head(fast.size()));
-        result.adhesion.correlation = pearson
-        (
-            measuredSurfaceEnergies(slow, restitutionTheta, s),
-            lawSurfaceEnergies(adhesionTheta, slowSpeeds)
-        );
+        jointFit(problem, fast, slow, f, result);
     }
-
-    report(result.restitution, s.restitutionType, {"k", "p"}, {"R"},
-           restitutionTheta, restitutionFit.standardErrors);
-    report(result.adhesion, s.adhesionType, {"c", "n"}, {"gamma"},
-           adhesionTheta, adhesionFit.standardErrors);
+    problem.restitution.report
+    (
+        result.restitution, f.restitutionTheta, f.restitutionFit.standardErrors
+    );
+    problem.adhesion.report
+    (
+        result.adhesion, f.adhesionTheta, f.adhesionFit.standardErrors
+    );
     return result;
 }
+
 
 ImpactModel fittedModel
 (
@@ -474,18 +546,15 @@ ImpactModel fittedModel
     const ImpactFitSettings& s
 )
 {
-    // The fits' parameters: the first coefficient of a power law by its
-    // logarithm
-    const auto theta = [](const LawFit& law)
-    {
-        VectorXd t = Eigen::Map<const VectorXd>(law.values.data(), law.values.size());
-        if (law.type == "powerLaw") t(0) = std::log(t(0));
-        return t;
-    };
     return ImpactModel
     (
-        s.particle, s.wall, restitutionLaw(theta(fit.restitution)),
-        adhesionLaw(theta(fit.adhesion)), FrictionLaw::sticking(), -1, 0
+        s.particle, s.wall,
+        RestitutionLaw::fitting(fit.restitution.type).law
+        (
+            fit.restitution.values.data()
+        ),
+        AdhesionLaw::fitting(fit.adhesion.type).law(fit.adhesion.values.data()),
+        FrictionLaw::sticking(), -1, 0
     );
 }
 

@@ -23,8 +23,11 @@ LeastSquares levenbergMarquardt
         const double s = (model(t) - y).squaredNorm();
         return std::isfinite(s) ? s : HUGE_VAL;
     };
+    // Central differences; one-sided where the other side leaves the
+    // model's range (a coefficient at its bound, as an exponent at 0)
     const auto jacobian = [&](const VectorXd& t)
     {
+        const VectorXd at = model(t);
         MatrixXd J(n, p);
         for (int j = 0; j < p; ++j)
         {
@@ -32,7 +35,21 @@ LeastSquares levenbergMarquardt
             VectorXd up = t, down = t;
             up(j) += h;
             down(j) -= h;
-            J.col(j) = (model(up) - model(down))/(2*h);
+            const VectorXd above = model(up), below = model(down);
+            const bool upFinite = above.allFinite();
+            const bool downFinite = below.allFinite();
+            if (upFinite && downFinite)
+            {
+                J.col(j) = (above - below)/(2*h);
+            }
+            else if (upFinite)
+            {
+                J.col(j) = (above - at)/h;
+            }
+            else
+            {
+                J.col(j) = (at - below)/h;
+            }
         }
         return J;
     };

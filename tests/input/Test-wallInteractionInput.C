@@ -258,7 +258,10 @@ bool readCoefficients(const inputCase& c, std::string& message)
         const dictionary coeffsDict(k.dictionaryOf());
         dictionary subModels;
         subModels.add("adhesiveWallInteractionCoeffs", coeffsDict);
-        compat::checkedBaseKeywords(subModels, "adhesiveWallInteraction");
+        checkedInput::baseKeywordsChecked
+        (
+            subModels, "adhesiveWallInteraction", compat::baseKeywords()
+        );
         const wallInteractionCoeffs coeffs
         (
             coeffsDict, c.patches, cloudParticle, compat::baseKeywords()

@@ -158,7 +158,7 @@ TEST_P(EveryLawCombination, FrameInvariance3D)
         EXPECT_EQ(there.result.outcome, here.result.outcome);
 
         // The 3D result is the planar one in the incident plane
-        if (here.result.outcome == Outcome::rebound)
+        if (here.result.outcome == Fate::rebound)
         {
             EXPECT_NEAR(here.U.z, here.result.unOut, 1e-12*scale);
             EXPECT_NEAR
@@ -199,7 +199,7 @@ TEST_P(EveryLawCombination, MovingAwayIsLeftAlone)
     for (double un : {0.0, -1e-12, -3.0})
     {
         const ImpactResult r = m.impact(p, un, 2.0, 5.0);
-        EXPECT_EQ(r.outcome, Outcome::notApproaching);
+        EXPECT_EQ(r.outcome, Fate::notApproaching);
         EXPECT_EQ(r.unOut, -un);
         EXPECT_EQ(r.utOut, 2.0);
         EXPECT_EQ(r.spinOut, 5.0);

@@ -112,9 +112,9 @@ TEST(Selection, ByNameWithKeywords)
     (
         "powerLaw", MapParameters{{"k", 45.3}, {"p", 0.718}}
     );
-    ASSERT_TRUE(r.as<RestitutionLaw::PowerLaw>());
-    EXPECT_EQ(r.as<RestitutionLaw::PowerLaw>()->k, 45.3);
-    EXPECT_EQ(r.as<RestitutionLaw::PowerLaw>()->p, 0.718);
+    ASSERT_TRUE(r.as<restitution::PowerLaw>());
+    EXPECT_EQ(r.as<restitution::PowerLaw>()->k, 45.3);
+    EXPECT_EQ(r.as<restitution::PowerLaw>()->p, 0.718);
     EXPECT_EQ(r.typeName(), "powerLaw");
     EXPECT_EQ(r.describe(), "type powerLaw; k 45.3; p 0.718;");
 
@@ -136,12 +136,12 @@ TEST(Selection, ByNameWithKeywords)
     EXPECT_EQ(AdhesionLaw::select("none", MapParameters{}).typeName(), "none");
     const FrictionLaw coulomb =
         FrictionLaw::select("coulomb", MapParameters{{"mu", 0.3}});
-    ASSERT_TRUE(coulomb.as<FrictionLaw::Coulomb>());
-    EXPECT_EQ(coulomb.as<FrictionLaw::Coulomb>()->mu, 0.3);
+    ASSERT_TRUE(coulomb.as<friction::Coulomb>());
+    EXPECT_EQ(coulomb.as<friction::Coulomb>()->mu, 0.3);
     EXPECT_TRUE
     (
         FrictionLaw::select("sticking", MapParameters{})
-            .as<FrictionLaw::Sticking>()
+            .as<friction::Sticking>()
     );
 
     const std::vector<std::string> restitutionNames

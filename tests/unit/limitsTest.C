@@ -45,7 +45,7 @@ TEST(Limits, ElasticWithoutAdhesionConservesNormalEnergy)
     for (double un : {1e-3, 0.1, 1.0, 37.0, 1e4})
     {
         const ImpactResult r = m.impact(sphere, un, 0.5*un);
-        EXPECT_EQ(r.outcome, Outcome::rebound);
+        EXPECT_EQ(r.outcome, Fate::rebound);
         EXPECT_NEAR(r.unOut, un, 1e-15*un);
         EXPECT_EQ(r.utOut, 0.5*un);
         EXPECT_NEAR(r.energyLoss, 0, 1e-15*sphere.mass()*un*un);
@@ -73,7 +73,7 @@ TEST(Limits, ReboundVanishesContinuouslyAtCaptureThreshold)
             AdhesionLaw::constant(gammaCapture*(1 - eps)),
             FrictionLaw::sticking()
         ).impact(sphere, un, 0);
-        ASSERT_EQ(r.outcome, Outcome::rebound) << "eps " << eps;
+        ASSERT_EQ(r.outcome, Fate::rebound) << "eps " << eps;
         // Un' = R un sqrt(eps) exactly for this gamma
         EXPECT_NEAR(r.unOut, R*un*std::sqrt(eps), 1e-6*R*un*std::sqrt(eps));
         EXPECT_LT(r.unOut, previous);

@@ -151,8 +151,8 @@ TEST(RandomSweep, MillionImpactsStayPhysical)
                 (un*un + ut*ut)*(1 + 1e-12)
             );
 
-            if (r.outcome == Outcome::rebound) ++rebounds;
-            if (r.outcome == Outcome::captured) ++captures;
+            if (r.outcome == Fate::rebound) ++rebounds;
+            if (r.outcome == Fate::capture) ++captures;
         }
     }
 

@@ -25,15 +25,14 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
     const wallImpact& impact
 )
 {
-    using fate = wallImpact::fate;
+    using brachDunn::Fate;
 
     const scalar nParticle = p.nParticle();
     const scalar mass = nParticle*p.mass();
-    const label outcome = label(impact.outcome) - label(fate::rebound);
     statistics_.add
     (
         statistics_.rowOf(pp.index(), compat::parcelInjectorId(p), p.d()),
-        fateStatistics::fate(outcome),
+        impact.outcome,
         nParticle,
         mass,
         Foam::sqrt(sqr(impact.un) + sqr(impact.ut)),
@@ -41,9 +40,9 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
     );
 
     const label facei = pp.whichFace(p.face());
-    if (deposits_ && impact.outcome != fate::rebound)
+    if (deposits_ && impact.outcome != Fate::rebound)
     {
-        if (impact.outcome == fate::capture)
+        if (impact.outcome == Fate::capture)
         {
             deposits_->addCapture(pp.index(), facei, mass, nParticle);
         }
@@ -56,12 +55,13 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
     if (records_ && records_->active())
     {
         const Time& time = this->owner().mesh().time();
+        const point position = compat::position(p, this->owner().mesh());
         records_->add
         ({
             time.value() - (1 - p.stepFraction())*time.deltaTValue(),
-            pp.index(), facei,
-            compat::position(p, this->owner().mesh()),
-            p.d(), nParticle, impact.un, impact.ut, outcome,
+            scalar(pp.index()), scalar(facei),
+            position.x(), position.y(), position.z(),
+            p.d(), nParticle, impact.un, impact.ut, scalar(impact.outcome),
             impact.R, impact.WA, impact.unOut, impact.utOut
         });
     }
@@ -86,8 +86,8 @@ void Foam::AdhesiveWallInteraction<CloudType>::restore()
     // The deposit fields must hold what the stored totals count
     const List<fateStatistics::row> totals(statistics_.totals());
     const scalar deposited =
-        fateStatistics::parcels(totals, fateStatistics::capture)
-      + fateStatistics::parcels(totals, fateStatistics::escape);
+        fateStatistics::parcels(totals, brachDunn::Fate::capture)
+      + fateStatistics::parcels(totals, brachDunn::Fate::escape);
     if (deposits_ && deposited > 0 && deposits_->missing().size())
     {
         FatalErrorInFunction
@@ -100,6 +100,45 @@ void Foam::AdhesiveWallInteraction<CloudType>::restore()
             << " (or restart from a time that has them), or set writeFields"
             << " no" << exit(FatalError);
     }
+}
+
+
+template<class CloudType>
+bool Foam::AdhesiveWallInteraction<CloudType>::apply
+(
+    typename CloudType::parcelType& p,
+    const wallImpact& impact,
+    const bool adhesive
+) const
+{
+    constexpr bool colliding =
+        wallInteractionCloud::isColliding<typename CloudType::parcelType>::value;
+
+    if (impact.outcome == brachDunn::Fate::rebound)
+    {
+        compat::setActive(p, true);
+        p.U() = impact.U;
+        if constexpr (colliding)
+        {
+            // Rebound entries leave the spin, as standardWallInteraction
+            if (adhesive)
+            {
+                p.angularMomentum() = p.momentOfInertia()*impact.omega;
+            }
+        }
+        return true;
+    }
+
+    // Captured or escaped
+    compat::setActive(p, false);
+    p.U() = Zero;
+    if constexpr (colliding)
+    {
+        p.angularMomentum() = Zero;
+    }
+    return
+        impact.outcome == brachDunn::Fate::capture
+     && !coeffs_.removeCaptured();
 }
 
 
@@ -189,7 +228,7 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
     bool& keepParticle
 )
 {
-    using fate = wallImpact::fate;
+    using brachDunn::Fate;
     constexpr bool colliding =
         wallInteractionCloud::isColliding<typename CloudType::parcelType>::value;
 
@@ -236,39 +275,16 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
             << exit(FatalError);
     }
 
-    switch (impact.outcome)
+    if (impact.outcome == Fate::notApproaching)
     {
-        case fate::notApproaching:
-            keepParticle = true;
-            return true;
-
-        case fate::rebound:
-            keepParticle = true;
-            compat::setActive(p, true);
-            p.U() = impact.U + Up;
-            if constexpr (colliding)
-            {
-                // Rebound entries leave the spin, as standardWallInteraction
-                if (entry->type() == wallInteractionEntry::interaction::adhesive)
-                {
-                    p.angularMomentum() = p.momentOfInertia()*impact.omega;
-                }
-            }
-            break;
-
-        case fate::capture:
-        case fate::escape:
-            keepParticle =
-                impact.outcome == fate::capture && !coeffs_.removeCaptured();
-            compat::setActive(p, false);
-            p.U() = Zero;
-            if constexpr (colliding)
-            {
-                p.angularMomentum() = Zero;
-            }
-            break;
+        keepParticle = true;
+        return true;
     }
-
+    impact.U += Up;
+    keepParticle = apply
+    (
+        p, impact, entry->type() == wallInteractionEntry::interaction::adhesive
+    );
     count(p, pp, impact);
     return true;
 }
@@ -300,8 +316,8 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
         (
             wallInteractionCloud::injectedMass(this->owner()),
             wallInteractionCloud::airborneMass(this->owner()),
-            fateStatistics::mass(totals, fateStatistics::capture),
-            fateStatistics::mass(totals, fateStatistics::escape)
+            fateStatistics::mass(totals, brachDunn::Fate::capture),
+            fateStatistics::mass(totals, brachDunn::Fate::escape)
         );
     }
     if (this->writeTime())

@@ -394,3 +394,43 @@ void Foam::checkedInput::requireKnownKeywords
         }
     }
 }
+
+
+const Foam::dictionary& Foam::checkedInput::baseKeywordsChecked
+(
+    const dictionary& subModels,
+    const word& type,
+    const wordList& baseKeywords
+)
+{
+    const dictionary* coeffs =
+        findDictionary(subModels, type + "Coeffs", "{ ... }");
+    if (!coeffs)
+    {
+        return subModels;
+    }
+    for (const word& keyword : baseKeywords)
+    {
+        if (!find(*coeffs, keyword))
+        {
+            continue;
+        }
+        if (keyword == "U")
+        {
+            readWord(*coeffs, keyword);
+        }
+        else if (keyword == "UrMax")
+        {
+            readNumber(*coeffs, keyword);
+        }
+        else if (keyword == "writePrecision")
+        {
+            readCount(*coeffs, keyword, 0);
+        }
+        else
+        {
+            readSwitch(*coeffs, keyword, false);
+        }
+    }
+    return subModels;
+}

@@ -110,18 +110,18 @@ Foam::label Foam::fateStatistics::rowOf
 void Foam::fateStatistics::add
 (
     const label row,
-    const fate outcome,
+    const Fate outcome,
     const scalar nParticle,
     const scalar mass,
     const scalar speed,
     const scalar angle
 )
 {
-    sums& s = run_[row][outcome];
+    sums& s = run_[row][brachDunn::countedIndex(outcome)];
     s.parcels += 1;
     s.particles += nParticle;
     s.mass += mass;
-    if (outcome != escape)
+    if (outcome != Fate::escape)
     {
         s.speed += nParticle*speed;
         s.angle += nParticle*angle;
@@ -231,16 +231,68 @@ void Foam::fateStatistics::restore(const label patch, const stringList& values)
 Foam::scalar Foam::fateStatistics::total
 (
     const List<row>& totals,
-    const fate outcome,
+    const Fate outcome,
     scalar sums::*quantity
 )
 {
     scalar sum = 0;
     for (const row& r : totals)
     {
-        sum += r[outcome].*quantity;
+        sum += of(r, outcome).*quantity;
     }
     return sum;
+}
+
+
+const std::vector<Foam::fateStatistics::column>&
+Foam::fateStatistics::columns()
+{
+    // One line per column
+    static const std::vector<column> table = []
+    {
+        std::vector<column> c;
+        const std::pair<const char*, scalar sums::*> quantities[] =
+        {
+            {"Parcels", &sums::parcels},
+            {"Particles", &sums::particles},
+            {"Mass", &sums::mass}
+        };
+        for (const auto& [name, q] : quantities)
+        {
+            c.push_back({std::string("impact") + name, [q = q](const row& r)
+            {
+                scalar sum = 0;
+                for (const sums& s : r) sum += s.*q;
+                return sum;
+            }});
+        }
+        for (const Fate fate : brachDunn::countedFates)
+        {
+            for (const auto& [name, q] : quantities)
+            {
+                c.push_back
+                ({
+                    brachDunn::fateName(fate) + std::string(name),
+                    [fate, q = q](const row& r) { return of(r, fate).*q; }
+                });
+            }
+        }
+        for (const Fate fate : {Fate::rebound, Fate::capture})
+        {
+            c.push_back({brachDunn::fateName(fate) + std::string("Speed"),
+                [fate](const row& r)
+                {
+                    return mean(of(r, fate).speed, of(r, fate).particles);
+                }});
+            c.push_back({brachDunn::fateName(fate) + std::string("Angle"),
+                [fate](const row& r)
+                {
+                    return mean(of(r, fate).angle, of(r, fate).particles);
+                }});
+        }
+        return c;
+    }();
+    return table;
 }
 
 
@@ -255,14 +307,11 @@ void Foam::fateStatistics::writeHeader
         << " injector and size class; masses [kg], mean impact speed [m/s]"
         << " and angle from the wall normal [deg] of the particles" << nl
         << "# time\tpatch\tinjector\tdMin\tdMax";
-    for (const char* what : {"impact", "rebound", "capture", "escape"})
+    for (const column& c : columns())
     {
-        for (const char* of : {"Parcels", "Particles", "Mass"})
-        {
-            os << '\t' << what << of;
-        }
+        os << '\t' << c.name.c_str();
     }
-    os  << "\treboundSpeed\treboundAngle\tcaptureSpeed\tcaptureAngle" << endl;
+    os  << endl;
 }
 
 
@@ -287,23 +336,9 @@ void Foam::fateStatistics::write
                        ).c_str()
                     << '\t' << text(dMin(sizeClass)).c_str()
                     << '\t' << text(dMax(sizeClass)).c_str();
-                sums all;
-                for (const sums& s : r)
+                for (const column& c : columns())
                 {
-                    all.parcels += s.parcels;
-                    all.particles += s.particles;
-                    all.mass += s.mass;
-                }
-                for (const sums& s : {all, r[rebound], r[capture], r[escape]})
-                {
-                    os  << '\t' << text(s.parcels).c_str()
-                        << '\t' << text(s.particles).c_str()
-                        << '\t' << text(s.mass).c_str();
-                }
-                for (const sums& s : {r[rebound], r[capture]})
-                {
-                    os  << '\t' << text(mean(s.speed, s.particles)).c_str()
-                        << '\t' << text(mean(s.angle, s.particles)).c_str();
+                    os << '\t' << text(c.value(r)).c_str();
                 }
                 os << nl;
             }
@@ -333,9 +368,9 @@ void Foam::fateStatistics::print(Ostream& os, const List<row>& totals) const
                     os  << " d [" << text(dMin(sizeClass)).c_str() << ", "
                         << text(dMax(sizeClass)).c_str() << ") m";
                 }
-                const sums& b = r[rebound];
-                const sums& c = r[capture];
-                const sums& e = r[escape];
+                const sums& b = of(r, Fate::rebound);
+                const sums& c = of(r, Fate::capture);
+                const sums& e = of(r, Fate::escape);
                 os  << " (parcels, particles, mass)" << nl
                     << "      - impacts                     = "
                     << b.parcels + c.parcels + e.parcels << ", "

@@ -2,6 +2,7 @@
 #include "impactRecords.H"
 #include "Pstream.H"
 #include "releaseCompat.H"
+#include "Fate.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -10,9 +11,41 @@ namespace
 
 using namespace Foam;
 
-constexpr label recordSize = 15;
+//- How a column is written
+enum class format { number, label, patch, fate };
 
-const char* const outcomeNames[] = {"rebound", "capture", "escape"};
+//- The columns of impacts.csv: one line each
+const struct
+{
+    const char* name;
+    scalar impactRecords::record::*value;
+    format form;
+} columns[] =
+{
+    {"time", &impactRecords::record::time, format::number},
+    {"patch", &impactRecords::record::patch, format::patch},
+    {"face", &impactRecords::record::face, format::label},
+    {"x", &impactRecords::record::x, format::number},
+    {"y", &impactRecords::record::y, format::number},
+    {"z", &impactRecords::record::z, format::number},
+    {"diameter", &impactRecords::record::d, format::number},
+    {"nParticle", &impactRecords::record::nParticle, format::number},
+    {"un", &impactRecords::record::un, format::number},
+    {"ut", &impactRecords::record::ut, format::number},
+    {"outcome", &impactRecords::record::outcome, format::fate},
+    {"R", &impactRecords::record::R, format::number},
+    {"WA", &impactRecords::record::WA, format::number},
+    {"unOut", &impactRecords::record::unOut, format::number},
+    {"utOut", &impactRecords::record::utOut, format::number},
+};
+
+constexpr label recordSize = sizeof(columns)/sizeof(columns[0]);
+
+static_assert
+(
+    sizeof(impactRecords::record) == recordSize*sizeof(scalar),
+    "every member of impactRecords::record is a column of impacts.csv"
+);
 
 } // End anonymous namespace
 
@@ -38,14 +71,35 @@ Foam::impactRecords::impactRecords
     {
         file_ = std::make_unique<OFstream>(file);
         file_->precision(15);
-        *file_
-            << "time,patch,face,x,y,z,diameter,nParticle,un,ut,outcome,"
-            << "R,WA,unOut,utOut" << endl;
+        for (label c = 0; c < recordSize; ++c)
+        {
+            *file_ << (c ? "," : "") << columns[c].name;
+        }
+        *file_ << endl;
     }
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+void Foam::impactRecords::writeLine(Ostream& os, const scalar* r) const
+{
+    for (label c = 0; c < recordSize; ++c)
+    {
+        os << (c ? "," : "");
+        switch (columns[c].form)
+        {
+            case format::number: os << r[c]; break;
+            case format::label: os << label(r[c]); break;
+            case format::patch: os << patchNames_[label(r[c])]; break;
+            case format::fate:
+                os << brachDunn::fateName(brachDunn::Fate(label(r[c])));
+                break;
+        }
+    }
+    os << nl;
+}
+
 
 void Foam::impactRecords::write()
 {
@@ -61,17 +115,9 @@ void Foam::impactRecords::write()
     label i = 0;
     for (const record& r : buffer_)
     {
-        for
-        (
-            const scalar v
-          : {
-                r.time, scalar(r.patch), scalar(r.face), r.position.x(),
-                r.position.y(), r.position.z(), r.d, r.nParticle, r.un, r.ut,
-                scalar(r.outcome), r.R, r.WA, r.unOut, r.utOut
-            }
-        )
+        for (const auto& column : columns)
         {
-            mine[i++] = v;
+            mine[i++] = r.*column.value;
         }
     }
     mine[i] = dropped_;
@@ -94,13 +140,7 @@ void Foam::impactRecords::write()
                     capped = true;
                     break;
                 }
-                const scalar* r = &values[j*recordSize];
-                os  << r[0] << ',' << patchNames_[label(r[1])] << ','
-                    << label(r[2]) << ',' << r[3] << ',' << r[4] << ','
-                    << r[5] << ',' << r[6] << ',' << r[7] << ','
-                    << r[8] << ',' << r[9] << ','
-                    << outcomeNames[label(r[10])] << ',' << r[11] << ','
-                    << r[12] << ',' << r[13] << ',' << r[14] << nl;
+                writeLine(os, &values[j*recordSize]);
                 ++nWritten_;
             }
         }

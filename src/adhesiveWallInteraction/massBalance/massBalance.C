@@ -9,9 +9,12 @@ void Foam::massBalance::writeTo(const fileName& path, const word& cloudName)
     file_ = std::make_shared<OFstream>(path);
     *file_
         << "# adhesiveWallInteraction mass balance of cloud " << cloudName
-        << " at write times [kg]" << nl
-        << "# time\tinjected\tinitial\tairborne\tcaptured\tescaped"
-        << "\tresidual" << endl;
+        << " at write times [kg]" << nl << "# time";
+    for (const column& c : columns())
+    {
+        *file_ << '\t' << c.name;
+    }
+    *file_ << endl;
 }
 
 
@@ -57,28 +60,47 @@ Foam::scalar Foam::massBalance::residual() const
 }
 
 
+const std::vector<Foam::massBalance::column>& Foam::massBalance::columns()
+{
+    static const std::vector<column> table
+    {
+        {"injected", "injected", [](const massBalance& b)
+            { return b.injected_; }},
+        {"initial", "initial", [](const massBalance& b)
+            { return b.initial_.value_or(0); }},
+        {"airborne", "airborne", [](const massBalance& b)
+            { return b.airborne_; }},
+        {"captured", "captured", [](const massBalance& b)
+            { return b.captured_; }},
+        {"escaped", "escaped", [](const massBalance& b)
+            { return b.escaped_; }},
+        {
+            "residual",
+            "injected + initial - (airborne + captured + escaped)",
+            [](const massBalance& b) { return b.residual(); }
+        },
+    };
+    return table;
+}
+
+
 void Foam::massBalance::write(Ostream& os, const word& timeName) const
 {
-    const scalar initial = initial_.value_or(0);
-    os  << "    adhesiveWallInteraction mass balance [kg]" << nl
-        << "      - injected                    = " << injected_ << nl
-        << "      - initial                     = " << initial << nl
-        << "      - airborne                    = " << airborne_ << nl
-        << "      - captured                    = " << captured_ << nl
-        << "      - escaped                     = " << escaped_ << nl
-        << "      - injected + initial - (airborne + captured + escaped) = "
-        << residual() << nl;
+    os  << "    adhesiveWallInteraction mass balance [kg]" << nl;
+    for (const column& c : columns())
+    {
+        const std::string label(c.label);
+        os  << "      - " << label.c_str()
+            << std::string(label.size() < 28 ? 28 - label.size() : 1, ' ').c_str()
+            << "= " << c.value(*this) << nl;
+    }
 
     if (file_)
     {
         *file_ << timeName;
-        for
-        (
-            const scalar value
-          : {injected_, initial, airborne_, captured_, escaped_, residual()}
-        )
+        for (const column& c : columns())
         {
-            *file_ << '\t' << brachDunn::toText(value).c_str();
+            *file_ << '\t' << brachDunn::toText(c.value(*this)).c_str();
         }
         *file_ << endl;
     }

@@ -152,10 +152,36 @@ Foam::wallInteractionEntry::wallInteractionEntry
 )
 :
     name_(name),
-    type_(interaction::none),
-    patchType_(),
+    type_(readInteraction(dict)),
+    patchType_
+    (
+        // Constraint patches of this type are the entry's too (opt-in)
+        checkedInput::readWord
+        (
+            dict, "patchType", word::null, constraintPatchTypes
+        )
+    ),
     e_(1),
     mu_(0)
+{
+    // The entries with coefficients take only their own keywords, so that a
+    // misspelt one is not ignored; stick, escape and none read nothing, and
+    // may keep an adhesive entry's coefficients while cases are compared
+    if (type_ == interaction::rebound)
+    {
+        readRebound(dict);
+    }
+    else if (type_ == interaction::adhesive)
+    {
+        readAdhesive(dict, particle);
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::wallInteractionEntry::interaction
+Foam::wallInteractionEntry::readInteraction(const dictionary& dict)
 {
     const word typeName(checkedInput::readWord(dict, "type"));
     const auto found =
@@ -173,75 +199,135 @@ Foam::wallInteractionEntry::wallInteractionEntry
           + names
         );
     }
-    type_ = static_cast<interaction>(found - interactionNames.begin());
+    return static_cast<interaction>(found - interactionNames.begin());
+}
 
-    // Constraint patches of this type are the entry's too (opt-in)
-    patchType_ = checkedInput::readWord
+
+void Foam::wallInteractionEntry::readRebound(const dictionary& dict)
+{
+    checkedInput::requireKnownKeywords
     (
-        dict, "patchType", word::null, constraintPatchTypes
+        dict, {"type", "patchType", "e", "mu"}, "patch entries of type rebound"
     );
 
-    // The entries with coefficients take only their own keywords, so that a
-    // misspelt one is not ignored; stick, escape and none read nothing, and
-    // may keep an adhesive entry's coefficients while cases are compared
-    if (type_ == interaction::rebound)
+    // As standardWallInteraction: e in [0, 1], mu a loss fraction in [0, 1]
+    e_ = checkedInput::readNumber(dict, "e", 1);
+    mu_ = checkedInput::readNumber(dict, "mu", 0);
+    checkedInput::coreCall(dict, [&]
     {
-        checkedInput::requireKnownKeywords
-        (
-            dict, {"type", "patchType", "e", "mu"},
-            "patch entries of type rebound"
-        );
+        brachDunn::requireInRange("e", e_, 0, 1);
+        brachDunn::requireInRange("mu", mu_, 0, 1);
+    });
+}
 
-        // As standardWallInteraction: e in [0, 1], mu a loss fraction in [0, 1]
-        e_ = checkedInput::readNumber(dict, "e", 1);
-        mu_ = checkedInput::readNumber(dict, "mu", 0);
+
+void Foam::wallInteractionEntry::readAdhesive
+(
+    const dictionary& dict,
+    const particleMaterial& particle
+)
+{
+    checkedInput::requireKnownKeywords
+    (
+        dict,
+        {
+            "type", "patchType", "E", "nu", "restitution", "adhesion",
+            "friction", "momentCoeff", "minReboundSpeed"
+        },
+        "patch entries of type adhesive"
+    );
+
+    const brachDunn::ElasticMaterial wall = readElasticMaterial(dict);
+    const auto restitution =
+        readLaw<brachDunn::RestitutionLaw>(dict, "restitution");
+    const auto adhesion = readLaw<brachDunn::AdhesionLaw>(dict, "adhesion");
+    // Sticking when absent; present, it must be a law's dictionary
+    const auto friction =
+        checkedInput::find(dict, "friction")
+      ? readLaw<brachDunn::FrictionLaw>(dict, "friction")
+      : brachDunn::FrictionLaw::sticking();
+    const scalar momentCoeff =
+        checkedInput::readNumber(dict, "momentCoeff", -1);
+    const scalar minReboundSpeed = checkedInput::readNumber
+    (
+        dict, "minReboundSpeed",
+        brachDunn::ImpactModel::defaultMinReboundSpeed
+    );
+    const brachDunn::ElasticMaterial particleConstants = particle();
+    model_.emplace
+    (
         checkedInput::coreCall(dict, [&]
         {
-            brachDunn::requireInRange("e", e_, 0, 1);
-            brachDunn::requireInRange("mu", mu_, 0, 1);
-        });
-    }
-    else if (type_ == interaction::adhesive)
-    {
-        checkedInput::requireKnownKeywords
-        (
-            dict,
-            {
-                "type", "patchType", "E", "nu", "restitution", "adhesion",
-                "friction", "momentCoeff", "minReboundSpeed"
-            },
-            "patch entries of type adhesive"
-        );
+            return brachDunn::ImpactModel
+            (
+                particleConstants, wall, restitution, adhesion, friction,
+                momentCoeff, minReboundSpeed
+            );
+        })
+    );
+}
 
-        const brachDunn::ElasticMaterial wall = readElasticMaterial(dict);
-        const auto restitution =
-            readLaw<brachDunn::RestitutionLaw>(dict, "restitution");
-        const auto adhesion = readLaw<brachDunn::AdhesionLaw>(dict, "adhesion");
-        // Sticking when absent; present, it must be a law's dictionary
-        const auto friction =
-            checkedInput::find(dict, "friction")
-          ? readLaw<brachDunn::FrictionLaw>(dict, "friction")
-          : brachDunn::FrictionLaw::sticking();
-        const scalar momentCoeff =
-            checkedInput::readNumber(dict, "momentCoeff", -1);
-        const scalar minReboundSpeed = checkedInput::readNumber
-        (
-            dict, "minReboundSpeed",
-            brachDunn::ImpactModel::defaultMinReboundSpeed
-        );
-        const brachDunn::ElasticMaterial particleConstants = particle();
-        model_.emplace
-        (
-            checkedInput::coreCall(dict, [&]
-            {
-                return brachDunn::ImpactModel
-                (
-                    particleConstants, wall, restitution, adhesion, friction,
-                    momentCoeff, minReboundSpeed
-                );
-            })
-        );
+
+void Foam::wallInteractionEntry::reboundImpact
+(
+    wallImpact& out,
+    const vector& U,
+    const vector& Ut,
+    const vector& nw,
+    const vector& omega
+) const
+{
+    // standardWallInteraction's rebound: U -= (1 + e) Un n towards the
+    // wall, U -= mu Ut always
+    out.outcome = brachDunn::Fate::rebound;
+    out.U = U - mu_*Ut;
+    if (out.un > 0)
+    {
+        out.U -= (1 + e_)*out.un*nw;
     }
+    out.omega = omega;
+    out.R = e_;
+    out.unOut = max(-(out.U & nw), scalar(0));
+    out.utOut = (1 - mu_)*out.ut;
+}
+
+
+Foam::wallImpact Foam::wallInteractionEntry::adhesiveImpact
+(
+    const brachDunn::Particle& particle,
+    const vector& U,
+    const vector& nw,
+    const vector& omega
+) const
+{
+    wallImpact out;
+    const brachDunn::Impact3D impact = model_->impact
+    (
+        particle,
+        {U.x(), U.y(), U.z()},
+        {-nw.x(), -nw.y(), -nw.z()},
+        {omega.x(), omega.y(), omega.z()}
+    );
+    const brachDunn::ImpactResult& r = impact.result;
+    out.outcome = r.outcome;
+    out.un = r.un;
+    out.ut = r.ut;
+    out.R = r.R;
+    out.gamma = r.gamma;
+    out.WA = r.WA;
+    if (r.outcome == brachDunn::Fate::notApproaching)
+    {
+        out.U = U;
+        out.omega = omega;
+    }
+    else if (r.outcome == brachDunn::Fate::rebound)
+    {
+        out.U = vector(impact.U.x, impact.U.y, impact.U.z);
+        out.omega = vector(impact.omega.x, impact.omega.y, impact.omega.z);
+        out.unOut = r.unOut;
+        out.utOut = r.utOut;
+    }
+    return out;
 }
 
 
@@ -283,93 +369,32 @@ Foam::wallImpact Foam::wallInteractionEntry::impact
     const vector& omega
 ) const
 {
-    using fate = wallImpact::fate;
+    using brachDunn::Fate;
 
     wallImpact out;
-    // The normal and tangential parts, where the core does not give them
-    const auto tangential = [&]()
+    if (type_ == interaction::adhesive)
     {
+        out = adhesiveImpact(brachDunn::Particle{d, rho}, U, nw, omega);
+    }
+    else
+    {
+        // The normal and tangential parts, where the core does not give them
         out.un = U & nw;
         const vector Ut = U - out.un*nw;
         out.ut = mag(Ut);
-        return Ut;
-    };
-
-    switch (type_)
-    {
-        case interaction::escape:
-            tangential();
-            out.outcome = fate::escape;
-            break;
-
-        case interaction::stick:
-            tangential();
-            out.outcome = fate::capture;
-            break;
-
-        case interaction::rebound:
+        switch (type_)
         {
-            const vector Ut = tangential();
-            const scalar Un = out.un;
-            // standardWallInteraction's rebound: U -= (1 + e) Un n towards
-            // the wall, U -= mu Ut always
-            out.outcome = fate::rebound;
-            out.U = U - mu_*Ut;
-            if (Un > 0)
-            {
-                out.U -= (1 + e_)*Un*nw;
-            }
-            out.omega = omega;
-            out.R = e_;
-            out.unOut = max(-(out.U & nw), scalar(0));
-            out.utOut = (1 - mu_)*out.ut;
-            break;
+            case interaction::escape: out.outcome = Fate::escape; break;
+            case interaction::stick: out.outcome = Fate::capture; break;
+            case interaction::rebound: reboundImpact(out, U, Ut, nw, omega); break;
+            default:
+                FatalErrorInFunction
+                    << "Patch entry " << name_ << " has type none: it has no"
+                    << " impact" << exit(FatalError);
         }
-
-        case interaction::adhesive:
-        {
-            const brachDunn::Impact3D impact = model_->impact
-            (
-                brachDunn::Particle{d, rho},
-                {U.x(), U.y(), U.z()},
-                {-nw.x(), -nw.y(), -nw.z()},
-                {omega.x(), omega.y(), omega.z()}
-            );
-            const brachDunn::ImpactResult& r = impact.result;
-            out.un = r.un;
-            out.ut = r.ut;
-            out.R = r.R;
-            out.gamma = r.gamma;
-            out.WA = r.WA;
-            if (r.outcome == brachDunn::Outcome::notApproaching)
-            {
-                out.U = U;
-                out.omega = omega;
-            }
-            else if (r.captured())
-            {
-                out.outcome = fate::capture;
-            }
-            else
-            {
-                out.outcome = fate::rebound;
-                out.U = vector(impact.U.x, impact.U.y, impact.U.z);
-                out.omega =
-                    vector(impact.omega.x, impact.omega.y, impact.omega.z);
-                out.unOut = r.unOut;
-                out.utOut = r.utOut;
-            }
-            break;
-        }
-
-        case interaction::none:
-            FatalErrorInFunction
-                << "Patch entry " << name_ << " has type none: it has no"
-                << " impact" << exit(FatalError);
-            break;
     }
 
-    if (out.outcome == fate::rebound || out.outcome == fate::capture)
+    if (out.outcome == Fate::rebound || out.outcome == Fate::capture)
     {
         const scalar m = brachDunn::Particle{d, rho}.mass();
         out.energyLoss = 0.5*m*(magSqr(U) - magSqr(out.U));

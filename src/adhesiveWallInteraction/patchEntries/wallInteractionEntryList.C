@@ -164,59 +164,80 @@ Foam::wallInteractionEntryList::wallInteractionEntryList
         entries_.emplace_back(e.keyword(), entryDict, particle);
     }
 
-    // The first entry matching a patch applies to it
     for (std::size_t entryi = 0; entryi < entries_.size(); ++entryi)
     {
-        const keyType& name = entries_[entryi].name();
-        bool matched = false, used = false;
-        forAll(patches, patchi)
+        assign(entryi, patches, coeffs.name());
+    }
+    checkEveryPatch(coeffs, patches);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::wallInteractionEntryList::assign
+(
+    const std::size_t entryi,
+    const UList<patch>& patches,
+    const fileName& where
+)
+{
+    // The first entry matching a patch applies to it
+    const keyType& name = entries_[entryi].name();
+    bool matched = false, used = false;
+    forAll(patches, patchi)
+    {
+        if (matches(name, patches[patchi]))
         {
-            if (matches(name, patches[patchi]))
+            matched = true;
+            // Constraint patches only when the entry takes on their type
+            const patch& p = patches[patchi];
+            const bool eligible =
+                !p.constraint || p.type == entries_[entryi].patchType();
+            if (patchEntry_[patchi] < 0 && eligible)
             {
-                matched = true;
-                // Constraint patches only when the entry takes on their type
-                const patch& p = patches[patchi];
-                const bool eligible =
-                    !p.constraint || p.type == entries_[entryi].patchType();
-                if (patchEntry_[patchi] < 0 && eligible)
-                {
-                    patchEntry_[patchi] = entryi;
-                    used = true;
-                }
+                patchEntry_[patchi] = entryi;
+                used = true;
             }
         }
-        if (!matched)
-        {
-            warnings_.push_back
-            (
-                "No patch matches the entry " + name + " of " + coeffs.name()
-            );
-        }
-        else if (!used)
-        {
-            warnings_.push_back
-            (
-                "The entry " + name + " of " + coeffs.name() + " is never"
-                " used: the patches it matches are constraint patches (an"
-                " entry takes on symmetry, symmetryPlane or wedge patches"
-                " with patchType) or matched by an earlier entry (the first"
-                " match applies)"
-            );
-        }
     }
+    if (!matched)
+    {
+        warnings_.push_back
+        (
+            "No patch matches the entry " + name + " of " + where
+        );
+    }
+    else if (!used)
+    {
+        warnings_.push_back
+        (
+            "The entry " + name + " of " + where + " is never"
+            " used: the patches it matches are constraint patches (an"
+            " entry takes on symmetry, symmetryPlane or wedge patches"
+            " with patchType) or matched by an earlier entry (the first"
+            " match applies)"
+        );
+    }
+}
 
+
+void Foam::wallInteractionEntryList::checkEveryPatch
+(
+    const dictionary& coeffs,
+    const UList<patch>& patches
+)
+{
     std::string unmatched;
     forAll(patches, patchi)
     {
         const patch& p = patches[patchi];
         const wallInteractionEntry* e = entryOf(patchi);
-        if (p.constraint && !e)
-        {
-            continue;
-        }
         if (!e)
         {
-            unmatched += (unmatched.empty() ? "" : " ") + p.name;
+            if (!p.constraint)
+            {
+                unmatched += (unmatched.empty() ? "" : " ") + p.name;
+            }
         }
         else if
         (

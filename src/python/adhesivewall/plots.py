@@ -24,3 +24,16 @@ def save(fig, path):
     fig.tight_layout()
     fig.savefig(path, dpi=100)
     plt.close(fig)
+
+
+def axes(ax, xlabel, ylabel, title, xlim=None, ylim=None, xlog=False):
+    """Labels, title, limits and scale of a plot's axes."""
+    if xlog:
+        ax.set_xscale("log")
+    if xlim:
+        ax.set_xlim(*xlim)
+    if ylim:
+        ax.set_ylim(*ylim)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)

@@ -16,7 +16,9 @@ Usage
     Sweep (one line per diameter, speed and angle):
         diameter,speed,angle,un,ut,R,gamma,WA,captured,unOut,utOut,energyLoss
     SI units, angle in degrees from the wall normal, captured 0 or 1,
-    unOut and utOut 0 when captured, WA <= 0.
+    unOut and utOut 0 when captured, WA <= 0 (the columns and their units
+    are also in impactCalc -help). A list option takes one value or a list:
+    -diameters 5e-6, or -diameters "(2.58e-6 4.9e-6)".
 
     -critical: diameter,angle,criticalSpeed,criticalNormalSpeed
     (consistent by default, the paper's Eq. 26 with -criticalMethod paper;
@@ -55,6 +57,7 @@ Usage
 #include <memory>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace Foam;
@@ -147,7 +150,7 @@ void sweep
                         {"ut", "speeds"}
                     }
                 );
-                const bool captured = r.outcome == wallImpact::fate::capture;
+                const bool captured = r.outcome == brachDunn::Fate::capture;
                 os  << d << ',' << v << ',' << angle << ',' << r.un << ','
                     << r.ut << ',' << r.R << ',' << r.gamma << ',' << r.WA
                     << ',' << (captured ? 1 : 0) << ',' << r.unOut << ','
@@ -214,86 +217,56 @@ void criticalSpeeds
     }
 }
 
-} // End anonymous namespace
-
-
-int main(int argc, char *argv[])
+//- Options that belong to another one
+const std::pair<const char*, const char*> belongsTo[] =
 {
-    argList::addNote
-    (
-        "Impacts of an adhesiveWallInteraction patch entry over diameters,"
-        " speeds and angles; critical speeds; one impact in detail"
-    );
-    argList::noParallel();
-    compat::noBanner();
-    argList::addOption("dict", "file", "cloud properties file");
-    argList::addOption("patch", "name", "patch whose entry applies");
-    argList::addOption("rho", "value", "particle density [kg/m^3]");
-    argList::addOption("diameters", "list", "particle diameters [m]");
-    argList::addOption("speeds", "list", "incoming speeds [m/s]");
-    argList::addOption("angles", "list", "angles from the normal [deg]");
-    argList::addBoolOption("critical", "critical speeds instead");
-    argList::addOption
-    (
-        "criticalMethod", "name", "consistent (default) or paper (Eq. 26)"
-    );
-    argList::addBoolOption("diagnostics", "one impact in detail");
-    argList::addOption("measured", "value", "measured rebound speed [m/s]");
-    argList::addOption("lifshitz", "value", "h for the force review [J]");
-    argList::addOption("separation", "value", "z for the force review [m]");
-    argList::addOption("humidity", "value", "relative humidity [%]");
-    argList::addOption("charge", "value", "particle charge [C]");
-    argList::addOption("potential", "value", "contact potential [V]");
-    argList::addOption("output", "file", "write the CSV to this file");
-    argList::addOption("precision", "digits", "significant digits (10)");
-    argList::addOption("plot", "file.png", "plot with gnuplot");
+    {"measured", "diagnostics"},
+    {"lifshitz", "diagnostics"},
+    {"separation", "diagnostics"},
+    {"humidity", "diagnostics"},
+    {"charge", "diagnostics"},
+    {"potential", "diagnostics"},
+    {"criticalMethod", "critical"},
+};
 
-    #include "setRootCase.H"
+//- Options that exclude each other, and why
+const std::tuple<const char*, const char*, const char*> excludes[] =
+{
+    {"critical", "diagnostics", "-critical takes -diameters and -angles"},
+    {"critical", "speeds", "-critical takes -diameters and -angles"},
+    {"plot", "diagnostics", "-diagnostics has nothing to plot"},
+};
 
-    const word patchName(tools::text(args, "patch"));
-    const tools::caseWallModel wallModel(args, patchName);
-    const wallInteractionEntry& entry = wallModel.entry();
-    if
-    (
-        entry.type() == wallInteractionEntry::interaction::escape
-     || entry.type() == wallInteractionEntry::interaction::none
-    )
+
+//- Stop at an option given without the one it belongs to, or beside one
+//  it excludes
+void checkOptionConflicts(const argList& args)
+{
+    for (const auto& [option, owner] : belongsTo)
     {
-        FatalErrorInFunction
-            << "Patch " << patchName << " is of type " << entry.typeName()
-            << ": there is no impact to compute" << nl << exit(FatalError);
-    }
-    const scalar rho = wallModel.particleDensity(args);
-
-    const bool critical = tools::found(args, "critical");
-    const bool diagnostics = tools::found(args, "diagnostics");
-    for (const char* option : {"measured", "lifshitz", "separation", "humidity", "charge", "potential"})
-    {
-        if (tools::found(args, option) && !diagnostics)
+        if (tools::found(args, option) && !tools::found(args, owner))
         {
             FatalErrorInFunction
-                << "Option -" << option << " belongs to -diagnostics" << nl
+                << "Option -" << option << " belongs to -" << owner << nl
                 << exit(FatalError);
         }
     }
-    if (critical && (diagnostics || tools::found(args, "speeds")))
+    for (const auto& [option, other, why] : excludes)
     {
-        FatalErrorInFunction
-            << "Option -critical takes -diameters and -angles, not"
-            << (diagnostics ? " -diagnostics" : " -speeds") << nl
-            << exit(FatalError);
+        if (tools::found(args, option) && tools::found(args, other))
+        {
+            FatalErrorInFunction
+                << "Options -" << option << " and -" << other
+                << " exclude each other: " << why << nl << exit(FatalError);
+        }
     }
-    if (tools::found(args, "criticalMethod") && !critical)
-    {
-        FatalErrorInFunction
-            << "Option -criticalMethod belongs to -critical" << nl
-            << exit(FatalError);
-    }
+}
 
-    const scalarList diameters = listOption(args, "diameters", scalarList());
-    const scalarList angles = listOption(args, "angles", scalarList(1, Zero));
 
-    std::unique_ptr<std::ofstream> file;
+//- The stream the CSV goes to (-output FILE, else standard output), with
+//  the precision asked for
+std::ostream& output(const argList& args, std::unique_ptr<std::ofstream>& file)
+{
     if (tools::found(args, "output"))
     {
         file = std::make_unique<std::ofstream>(tools::fileOption(args, "output"));
@@ -312,67 +285,191 @@ int main(int argc, char *argv[])
             << ": must be in [1, 17]" << nl << exit(FatalError);
     }
     os << std::setprecision(precision);
+    return os;
+}
 
-    std::vector<tools::plotSeries> series;
-    if (critical)
+
+//- The adhesive entry of the patch (what: what needs it)
+const wallInteractionEntry& adhesiveEntry
+(
+    const wallInteractionEntry& entry,
+    const word& patchName,
+    const char* what
+)
+{
+    if (entry.type() != wallInteractionEntry::interaction::adhesive)
     {
-        if (entry.type() != wallInteractionEntry::interaction::adhesive)
-        {
-            FatalErrorInFunction
-                << "Patch " << patchName << " is of type "
-                << entry.typeName() << ": critical speeds need an adhesive"
-                << " entry" << nl << exit(FatalError);
-        }
-        const word method(tools::wordOption(args, "criticalMethod", "consistent"));
-        if (method != "consistent" && method != "paper")
-        {
-            FatalErrorInFunction
-                << "Option -criticalMethod " << method
-                << ": valid methods are consistent and paper" << nl
-                << exit(FatalError);
-        }
-        criticalSpeeds(os, entry.model(), rho, diameters, angles, method, series);
+        FatalErrorInFunction
+            << "Patch " << patchName << " is of type " << entry.typeName()
+            << ": " << what << " an adhesive entry" << nl
+            << exit(FatalError);
+    }
+    return entry;
+}
+
+
+void addOptions()
+{
+    argList::addNote
+    (
+        "Impacts of an adhesiveWallInteraction patch entry over diameters,"
+        " speeds and angles; critical speeds; one impact in detail.\n"
+        "Sweep columns: diameter [m], speed [m/s], angle [deg from the wall"
+        " normal], un, ut [m/s: normal and tangential incoming speed], R [-:"
+        " coefficient of restitution], gamma [J/m^2: surface energy], WA [J:"
+        " work of adhesion, <= 0], captured [0 or 1], unOut, utOut [m/s:"
+        " rebound speeds, 0 when captured], energyLoss [J].\n"
+        "-critical columns: diameter [m], angle [deg], criticalSpeed,"
+        " criticalNormalSpeed [m/s] (0: never captured, inf: always).\n"
+        "Example: impactCalc -patch walls -diameters 4.9e-6"
+        " -speeds \"(0.5 1 2 5)\" -angles \"(0 30)\""
+    );
+    tools::addCaseOptions("patch whose entry applies");
+    argList::addOption("diameters", "list", "particle diameters [m]: 5e-6 or \"(...)\"");
+    argList::addOption("speeds", "list", "incoming speeds [m/s]: 1 or \"(...)\"");
+    argList::addOption("angles", "list", "angles from the normal [deg] (0)");
+    argList::addBoolOption("critical", "critical speeds instead");
+    argList::addOption
+    (
+        "criticalMethod", "name", "consistent (default) or paper (Eq. 26)"
+    );
+    argList::addBoolOption("diagnostics", "one impact in detail");
+    argList::addOption("measured", "value", "measured rebound speed [m/s]");
+    argList::addOption("lifshitz", "value", "h for the force review [J]");
+    argList::addOption("separation", "value", "z for the force review [m]");
+    argList::addOption("humidity", "value", "relative humidity [%]");
+    argList::addOption("charge", "value", "particle charge [C]");
+    argList::addOption("potential", "value", "contact potential [V]");
+    argList::addOption("output", "file", "write the CSV to this file");
+    argList::addOption("precision", "digits", "significant digits (10)");
+    argList::addOption("plot", "file.png", "plot with gnuplot");
+}
+
+
+//- The critical speeds of the entry, by the method asked for
+void critical
+(
+    std::ostream& os,
+    const argList& args,
+    const tools::caseWallModel& wallModel,
+    const word& patchName,
+    std::vector<tools::plotSeries>& series
+)
+{
+    const wallInteractionEntry& entry =
+        adhesiveEntry(wallModel.entry(), patchName, "critical speeds need");
+    const word method(tools::wordOption(args, "criticalMethod", "consistent"));
+    if (method != "consistent" && method != "paper")
+    {
+        FatalErrorInFunction
+            << "Option -criticalMethod " << method
+            << ": valid methods are consistent and paper" << nl
+            << exit(FatalError);
+    }
+    criticalSpeeds
+    (
+        os, entry.model(), wallModel.particleDensity(args),
+        listOption(args, "diameters", scalarList()),
+        listOption(args, "angles", scalarList(1, Zero)), method, series
+    );
+}
+
+
+//- One impact in detail
+void diagnose
+(
+    std::ostream& os,
+    const argList& args,
+    const tools::caseWallModel& wallModel,
+    const word& patchName
+)
+{
+    const scalarList diameters = listOption(args, "diameters", scalarList());
+    const scalarList speeds = listOption(args, "speeds", scalarList());
+    const scalarList angles = listOption(args, "angles", scalarList(1, Zero));
+    writeDiagnostics
+    (
+        os, args, patchName,
+        adhesiveEntry(wallModel.entry(), patchName, "-diagnostics needs"),
+        single(args, "diameters", diameters), wallModel.particleDensity(args),
+        single(args, "speeds", speeds),
+        tools::found(args, "angles") ? single(args, "angles", angles) : 0
+    );
+}
+
+
+void plotSeries
+(
+    const argList& args,
+    const std::vector<tools::plotSeries>& series,
+    const bool critical
+)
+{
+    tools::plot
+    (
+        tools::fileOption(args, "plot"),
+        series,
+        critical
+      ? "set key outside right\nset grid\nset logscale x\n"
+        "set logscale y\nset xlabel 'particle diameter [m]'\n"
+        "set ylabel 'critical speed [m/s]'\n"
+      : "set key outside right\nset grid\nset logscale x\n"
+        "set yrange [0:*]\nset xlabel 'incoming speed [m/s]'\n"
+        "set ylabel 'rebound ratio Un''/un'\n"
+    );
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    addOptions();
+
+    #include "setRootCase.H"
+
+    checkOptionConflicts(args);
+    const word patchName(tools::text(args, "patch"));
+    const tools::caseWallModel wallModel(args, patchName);
+    const wallInteractionEntry& entry = wallModel.entry();
+    if
+    (
+        entry.type() == wallInteractionEntry::interaction::escape
+     || entry.type() == wallInteractionEntry::interaction::none
+    )
+    {
+        FatalErrorInFunction
+            << "Patch " << patchName << " is of type " << entry.typeName()
+            << ": there is no impact to compute" << nl << exit(FatalError);
+    }
+
+    std::unique_ptr<std::ofstream> file;
+    std::ostream& os = output(args, file);
+    std::vector<tools::plotSeries> series;
+    const bool criticalSpeeds = tools::found(args, "critical");
+    if (criticalSpeeds)
+    {
+        critical(os, args, wallModel, patchName, series);
+    }
+    else if (tools::found(args, "diagnostics"))
+    {
+        diagnose(os, args, wallModel, patchName);
     }
     else
     {
-        const scalarList speeds = listOption(args, "speeds", scalarList());
-        if (diagnostics)
-        {
-            writeDiagnostics
-            (
-                os, args, patchName, entry, single(args, "diameters", diameters),
-                rho, single(args, "speeds", speeds),
-                tools::found(args, "angles") ? single(args, "angles", angles) : 0
-            );
-        }
-        else
-        {
-            sweep(os, entry, rho, diameters, speeds, angles, series);
-        }
+        sweep
+        (
+            os, entry, wallModel.particleDensity(args),
+            listOption(args, "diameters", scalarList()),
+            listOption(args, "speeds", scalarList()),
+            listOption(args, "angles", scalarList(1, Zero)), series
+        );
     }
     os.flush();
 
     if (tools::found(args, "plot"))
     {
-        if (diagnostics)
-        {
-            FatalErrorInFunction
-                << "Option -plot: -diagnostics has nothing to plot" << nl
-                << exit(FatalError);
-        }
-        tools::plot
-        (
-            tools::fileOption(args, "plot"),
-            series,
-            critical
-          ? "set key outside right\nset grid\nset logscale x\n"
-            "set logscale y\nset xlabel 'particle diameter [m]'\n"
-            "set ylabel 'critical speed [m/s]'\n"
-          : "set key outside right\nset grid\nset logscale x\n"
-            "set yrange [0:*]\nset xlabel 'incoming speed [m/s]'\n"
-            "set ylabel 'rebound ratio Un''/un'\n"
-        );
+        plotSeries(args, series, criticalSpeeds);
     }
-
     return 0;
 }

@@ -209,12 +209,8 @@ int main(int argc, char *argv[])
         "Fit the restitution and adhesion laws of the Brach & Dunn model to"
         " measured normal impacts"
     );
-    argList::noParallel();
-    compat::noBanner();
+    tools::addCaseOptions("patch entry giving the materials");
     argList::addOption("data", "file", "CSV of diameter,speedIn,speedOut");
-    argList::addOption("dict", "file", "cloud properties giving the materials");
-    argList::addOption("patch", "name", "patch entry giving the wall material");
-    argList::addOption("rho", "value", "particle density [kg/m^3]");
     argList::addOption("particleE", "value", "particle Young's modulus [Pa]");
     argList::addOption("particleNu", "value", "particle Poisson's ratio");
     argList::addOption("wallE", "value", "wall Young's modulus [Pa]");

@@ -185,14 +185,12 @@ def plot_efficiency(path, results, correlation, fibre):
         curve = correlation.where(U0=U)
         ax.plot(curve["Stk"], curve["eta"], ":", color=colour, lw=2,
                 label=f"{U} m/s correlation")
-    ax.set_xscale("log")
-    ax.set_xlim(0.01, 60)
-    ax.set_ylim(0, 1.6)
-    ax.set_xlabel("Stokes number Stk = rho_p d^2 U_0 / (18 mu d_f)")
-    ax.set_ylabel("single-fibre efficiency")
-    ax.set_title("fibre %g um, solidity %g; solid: stick, dashed: adhesive, "
-                 "dotted: Kuwabara-flow eta_R + eta_I"
-                 % (fibre.dFibre * 1e6, fibre.alpha))
+    plots.axes(ax, "Stokes number Stk = rho_p d^2 U_0 / (18 mu d_f)",
+               "single-fibre efficiency",
+               "fibre %g um, solidity %g; solid: stick, dashed: adhesive, "
+               "dotted: Kuwabara-flow eta_R + eta_I"
+               % (fibre.dFibre * 1e6, fibre.alpha),
+               xlim=(0.01, 60), ylim=(0, 1.6), xlog=True)
     ax.legend(loc="center left", bbox_to_anchor=(1, 0.5))
     plots.save(fig, path)
 

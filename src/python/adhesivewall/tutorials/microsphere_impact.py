@@ -165,13 +165,10 @@ def plot_rebound(path, diameters, curves_table, results, figure5):
                 color=colour, label="%.3g um solver" % (d * 1e6))
         for v in figure5.where(diameter=near)["criticalSpeed"]:
             ax.axvline(v, color=colour, ls="--", lw=1)
-    ax.set_xscale("log")
-    ax.set_xlim(0.25, 120)
-    ax.set_ylim(0, 1)
-    ax.set_xlabel("impact speed [m/s]")
-    ax.set_ylabel("rebound ratio Un'/un")
-    ax.set_title("NH4-fluorescein on molybdenum (Brach and Dunn 1992); "
-                 "dashed: Figure 5 critical speeds")
+    plots.axes(ax, "impact speed [m/s]", "rebound ratio Un'/un",
+               "NH4-fluorescein on molybdenum (Brach and Dunn 1992); "
+               "dashed: Figure 5 critical speeds",
+               xlim=(0.25, 120), ylim=(0, 1), xlog=True)
     ax.legend(loc="center left", bbox_to_anchor=(1, 0.5))
     plots.save(fig, path)
 
