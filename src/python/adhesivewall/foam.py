@@ -179,6 +179,12 @@ def _body(path):
     return text[header.end():] if header else text
 
 
+def body(path):
+    """A field file's text after its FoamFile header (for tokens and
+    parse)."""
+    return _body(path)
+
+
 def list_file(path):
     """The list of a file holding one list (a lagrangian field, a
     positions file): scalars as numbers, vectors as lists."""
