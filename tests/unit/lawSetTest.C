@@ -158,3 +158,31 @@ TEST(LawSet, FrictionLawsGiveTheirImpulse)
     EXPECT_EQ(FrictionLaw::coulomb(0.3).tangentialImpulse(2, 3, 10), 3);
     EXPECT_EQ(FrictionLaw::coulomb(0.9).tangentialImpulse(2, 3, 10), 6);
 }
+
+
+TEST(LawSet, AMissingKeywordNamesTheStrangerGiven)
+{
+    // pp typed for p: the error is about p, and names pp
+    try
+    {
+        RestitutionLaw::select("powerLaw", MapParameters{{"k", 45.3}, {"pp", 0.7}});
+        ADD_FAILURE() << "no error";
+    }
+    catch (const InputError& err)
+    {
+        EXPECT_EQ(err.keyword(), "p");
+        EXPECT_NE(std::string(err.what()).find("given instead: pp"),
+                  std::string::npos) << err.what();
+    }
+    // Nothing else given: just required
+    try
+    {
+        AdhesionLaw::select("powerLaw", MapParameters{{"c", 0.34}});
+        ADD_FAILURE() << "no error";
+    }
+    catch (const InputError& err)
+    {
+        EXPECT_EQ(err.keyword(), "n");
+        EXPECT_EQ(err.requirement(), "keyword is required");
+    }
+}

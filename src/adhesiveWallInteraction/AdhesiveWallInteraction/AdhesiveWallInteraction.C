@@ -39,6 +39,15 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
         Foam::atan2(impact.ut, impact.un)*180/constant::mathematical::pi
     );
 
+    if (grade_)
+    {
+        grade_->fated
+        (
+            gradeGroup(p),
+            impact.outcome, nParticle, mass, p.origProc(), p.origId()
+        );
+    }
+
     const label facei = pp.whichFace(p.face());
     if (deposits_ && impact.outcome != Fate::rebound)
     {
@@ -77,6 +86,12 @@ void Foam::AdhesiveWallInteraction<CloudType>::restore()
         stringList stored;
         this->getModelProperty(statistics_.patchNames()[patch], stored);
         statistics_.restore(patch, stored);
+    }
+    if (grade_)
+    {
+        stringList stored;
+        this->getModelProperty("gradeEfficiency", stored);
+        grade_->restore(stored);
     }
     string initial;
     this->getModelProperty("initialMass", initial);
@@ -142,6 +157,37 @@ bool Foam::AdhesiveWallInteraction<CloudType>::apply
 }
 
 
+template<class CloudType>
+Foam::label Foam::AdhesiveWallInteraction<CloudType>::gradeGroup
+(
+    const typename CloudType::parcelType& p
+) const
+{
+    return grade_->groups().of
+    (
+        compat::parcelInjectorId(p), wallInteractionCloud::classDiameter(p)
+    );
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::updateGradeEfficiency()
+{
+    List<gradeEfficiency::parcel> parcels(this->owner().size());
+    label i = 0;
+    for (const auto& p : this->owner())
+    {
+        parcels[i++] =
+        {
+            gradeGroup(p),
+            p.origProc(), p.origId(), compat::isActive(p), p.nParticle(),
+            p.nParticle()*p.mass()
+        };
+    }
+    grade_->update(parcels);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -168,11 +214,21 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         coeffs_.sizeClassEdges()
     )
 {
-    for (const std::string& warning : coeffs_.entries().warnings())
+    wallInteractionCloud::check
+    (
+        cloud, this->dict(), typeName, coeffs_.magnitudes()
+    );
+    const std::vector<std::string>* warningLists[] =
     {
-        WarningInFunction << warning.c_str() << endl;
+        &coeffs_.entries().warnings(), coeffs_.magnitudes().warnings.get()
+    };
+    for (const auto* warnings : warningLists)
+    {
+        for (const std::string& warning : *warnings)
+        {
+            WarningInFunction << warning.c_str() << endl;
+        }
     }
-    wallInteractionCloud::check(cloud, this->dict(), typeName);
     if (coeffs_.particle())
     {
         const auto& particle = *coeffs_.particle();
@@ -192,6 +248,15 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
             << cloud.name() << ":massStick and " << cloud.name()
             << ":nStick, escaped mass to " << cloud.name() << ":massEscape"
             << endl;
+    }
+    if (coeffs_.writeToFile())
+    {
+        grade_ = std::make_shared<gradeEfficiency>
+        (
+            coeffs_.outputByInjectorId()
+          ? wallInteractionCloud::injectorIds(cloud) : labelList(),
+            coeffs_.sizeClassEdges()
+        );
     }
     restore();
 
@@ -214,6 +279,8 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         statisticsFile_ = std::make_shared<OFstream>(outputDir()/"statistics.dat");
         statistics_.writeHeader(*statisticsFile_, cloud.name());
         balance_.writeTo(outputDir()/"massBalance.dat", cloud.name());
+        gradeFile_ = std::make_shared<OFstream>(outputDir()/"gradeEfficiency.dat");
+        grade_->writeHeader(*gradeFile_, cloud.name());
     }
 }
 
@@ -250,7 +317,34 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
                 << " off the wall. Give walls an adhesive, rebound, stick or"
                 << " escape entry" << exit(FatalError);
         }
+        if (grade_)
+        {
+            // OpenFOAM removes it: a system escape
+            grade_->leaving
+            (
+                gradeGroup(p),
+                p.nParticle(), p.nParticle()*p.mass(), p.origProc(),
+                p.origId()
+            );
+        }
         return false;
+    }
+
+    // A diameter that can only be a unit mistake (5 typed for 5 um): no
+    // injector's size said so at the start (a table of sizes)
+    const brachDunn::Magnitude& diameter = brachDunn::magnitude::diameter;
+    if
+    (
+        (p.d() > diameter.mistakeAbove || p.d() < diameter.mistakeBelow)
+     && !coeffs_.magnitudes().extreme
+    )
+    {
+        FatalErrorInFunction
+            << "Parcel at " << compat::position(p, this->owner().mesh())
+            << " on patch " << pp.name() << ": "
+            << brachDunn::unitMistake(diameter, "d", p.d()).c_str()
+            << " (extremeValues yes; takes it as it is)" << nl
+            << exit(FatalError);
     }
 
     vector nw, Up;
@@ -293,8 +387,17 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
 template<class CloudType>
 void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
 {
+    // The full tables at write times (or every step, logTables yes),
+    // else one line per patch
     const List<fateStatistics::row> totals(statistics_.totals());
-    statistics_.print(os, totals);
+    if (coeffs_.logTables() || this->writeTime())
+    {
+        statistics_.print(os, totals);
+    }
+    else
+    {
+        statistics_.printSummary(os, totals);
+    }
 
     if (statisticsFile_)
     {
@@ -307,6 +410,17 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
     if (records_)
     {
         records_->write();
+    }
+    if (grade_)
+    {
+        updateGradeEfficiency();
+        if (gradeFile_)
+        {
+            grade_->write
+            (
+                *gradeFile_, compat::timeName(this->owner().mesh().time())
+            );
+        }
     }
 
     // The first step fixes the initial mass; write times print the balance
@@ -324,6 +438,10 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
     {
         balance_.write(os, compat::timeName(this->owner().mesh().time()));
         this->setModelProperty("initialMass", balance_.storedText());
+        if (grade_)
+        {
+            this->setModelProperty("gradeEfficiency", grade_->storedText());
+        }
         forAll(statistics_.patchNames(), patch)
         {
             this->setModelProperty

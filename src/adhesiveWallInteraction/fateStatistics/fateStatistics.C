@@ -32,20 +32,6 @@ scalar mean(const scalar sum, const scalar particles)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::fateStatistics::dMin(const label sizeClass) const
-{
-    return sizeClass > 0 ? edges_[sizeClass - 1] : 0;
-}
-
-
-Foam::scalar Foam::fateStatistics::dMax(const label sizeClass) const
-{
-    return
-        sizeClass < edges_.size()
-      ? edges_[sizeClass] : std::numeric_limits<scalar>::infinity();
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fateStatistics::fateStatistics
@@ -58,9 +44,7 @@ Foam::fateStatistics::fateStatistics
 :
     patchNames_(),
     patchIndex_(meshPatchNames.size(), -1),
-    injectorIds_(injectorIds),
-    injectorIndex_(),
-    edges_(sizeClassEdges),
+    groups_(injectorIds, sizeClassEdges),
     run_(),
     stored_()
 {
@@ -71,10 +55,6 @@ Foam::fateStatistics::fateStatistics
             patchIndex_[patchi] = patchNames_.size();
             patchNames_.append(meshPatchNames[patchi]);
         }
-    }
-    forAll(injectorIds_, i)
-    {
-        injectorIndex_[injectorIds_[i]] = i;
     }
     run_.setSize(patchNames_.size()*nGroups(), row());
     stored_ = run_;
@@ -90,20 +70,7 @@ Foam::label Foam::fateStatistics::rowOf
     const scalar d
 ) const
 {
-    label injector = 0;
-    if (!injectorIds_.empty())
-    {
-        // A parcel whose identifier is no injector's (OpenFOAM sets it
-        // after the first move) counts under the first injector
-        const auto found = injectorIndex_.find(injectorId);
-        injector = found == injectorIndex_.end() ? 0 : found->second;
-    }
-    label sizeClass = 0;
-    while (sizeClass < edges_.size() && !(d < edges_[sizeClass]))
-    {
-        ++sizeClass;
-    }
-    return rowIndex(patchIndex_[meshPatch], injector, sizeClass);
+    return patchIndex_[meshPatch]*nGroups() + groups_.of(injectorId, d);
 }
 
 
@@ -324,24 +291,18 @@ void Foam::fateStatistics::write
 {
     forAll(patchNames_, patch)
     {
-        for (label injector = 0; injector < nInjectors(); ++injector)
+        for (label group = 0; group < nGroups(); ++group)
         {
-            for (label sizeClass = 0; sizeClass < nClasses(); ++sizeClass)
+            const row& r = totals[patch*nGroups() + group];
+            os  << timeName << '\t' << patchNames_[patch] << '\t'
+                << groups_.injector(group).c_str()
+                << '\t' << text(groups_.dMin(group)).c_str()
+                << '\t' << text(groups_.dMax(group)).c_str();
+            for (const column& c : columns())
             {
-                const row& r = totals[rowIndex(patch, injector, sizeClass)];
-                os  << timeName << '\t' << patchNames_[patch] << '\t'
-                    << (
-                           injectorIds_.empty()
-                         ? string("all") : Foam::name(injectorIds_[injector])
-                       ).c_str()
-                    << '\t' << text(dMin(sizeClass)).c_str()
-                    << '\t' << text(dMax(sizeClass)).c_str();
-                for (const column& c : columns())
-                {
-                    os << '\t' << text(c.value(r)).c_str();
-                }
-                os << nl;
+                os << '\t' << text(c.value(r)).c_str();
             }
+            os << nl;
         }
     }
     os.flush();
@@ -352,43 +313,71 @@ void Foam::fateStatistics::print(Ostream& os, const List<row>& totals) const
 {
     forAll(patchNames_, patch)
     {
-        for (label injector = 0; injector < nInjectors(); ++injector)
+        for (label group = 0; group < nGroups(); ++group)
         {
-            for (label sizeClass = 0; sizeClass < nClasses(); ++sizeClass)
+            const row& r = totals[patch*nGroups() + group];
+            os  << "    adhesiveWallInteraction patch "
+                << patchNames_[patch];
+            if (groups_.byInjector())
             {
-                const row& r = totals[rowIndex(patch, injector, sizeClass)];
-                os  << "    adhesiveWallInteraction patch "
-                    << patchNames_[patch];
-                if (!injectorIds_.empty())
-                {
-                    os << " injector " << injectorIds_[injector];
-                }
-                if (!edges_.empty())
-                {
-                    os  << " d [" << text(dMin(sizeClass)).c_str() << ", "
-                        << text(dMax(sizeClass)).c_str() << ") m";
-                }
-                const sums& b = of(r, Fate::rebound);
-                const sums& c = of(r, Fate::capture);
-                const sums& e = of(r, Fate::escape);
-                os  << " (parcels, particles, mass)" << nl
-                    << "      - impacts                     = "
-                    << b.parcels + c.parcels + e.parcels << ", "
-                    << b.particles + c.particles + e.particles << ", "
-                    << b.mass + c.mass + e.mass << nl
-                    << "      - rebounds                    = "
-                    << b.parcels << ", " << b.particles << ", " << b.mass << nl
-                    << "      - captures                    = "
-                    << c.parcels << ", " << c.particles << ", " << c.mass << nl
-                    << "      - escapes                     = "
-                    << e.parcels << ", " << e.particles << ", " << e.mass << nl
-                    << "      - captured: mean impact speed, angle = "
-                    << mean(c.speed, c.particles) << " m/s, "
-                    << mean(c.angle, c.particles) << " deg" << nl
-                    << "      - rebounded: mean impact speed, angle = "
-                    << mean(b.speed, b.particles) << " m/s, "
-                    << mean(b.angle, b.particles) << " deg" << nl;
+                os << " injector " << groups_.injector(group).c_str();
             }
+            if (groups_.bySize())
+            {
+                os  << " d [" << text(groups_.dMin(group)).c_str() << ", "
+                    << text(groups_.dMax(group)).c_str() << ") m";
+            }
+            const sums& b = of(r, Fate::rebound);
+            const sums& c = of(r, Fate::capture);
+            const sums& e = of(r, Fate::escape);
+            os  << " (parcels, particles, mass)" << nl
+                << "      - impacts                     = "
+                << b.parcels + c.parcels + e.parcels << ", "
+                << b.particles + c.particles + e.particles << ", "
+                << b.mass + c.mass + e.mass << nl
+                << "      - rebounds                    = "
+                << b.parcels << ", " << b.particles << ", " << b.mass << nl
+                << "      - captures                    = "
+                << c.parcels << ", " << c.particles << ", " << c.mass << nl
+                << "      - escapes                     = "
+                << e.parcels << ", " << e.particles << ", " << e.mass << nl
+                << "      - captured: mean impact speed, angle = "
+                << mean(c.speed, c.particles) << " m/s, "
+                << mean(c.angle, c.particles) << " deg" << nl
+                << "      - rebounded: mean impact speed, angle = "
+                << mean(b.speed, b.particles) << " m/s, "
+                << mean(b.angle, b.particles) << " deg" << nl;
         }
+    }
+}
+
+
+void Foam::fateStatistics::printSummary
+(
+    Ostream& os,
+    const List<row>& totals
+) const
+{
+    forAll(patchNames_, patch)
+    {
+        sums impacts, captures, escapes;
+        for (label group = 0; group < nGroups(); ++group)
+        {
+            const row& r = totals[patch*nGroups() + group];
+            for (const sums& s : r)
+            {
+                impacts.parcels += s.parcels;
+                impacts.particles += s.particles;
+            }
+            captures.parcels += of(r, Fate::capture).parcels;
+            captures.particles += of(r, Fate::capture).particles;
+            escapes.parcels += of(r, Fate::escape).parcels;
+            escapes.particles += of(r, Fate::escape).particles;
+        }
+        os  << "    adhesiveWallInteraction " << patchNames_[patch]
+            << " (parcels, particles): impacts " << impacts.parcels << ", "
+            << impacts.particles << "; captured " << captures.parcels << ", "
+            << captures.particles << "; escaped " << escapes.parcels << ", "
+            << escapes.particles << nl;
     }
 }

@@ -130,7 +130,11 @@ const Foam::wordList Foam::wallInteractionEntry::constraintPatchTypes
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
 
-brachDunn::ElasticMaterial Foam::readElasticMaterial(const dictionary& dict)
+brachDunn::ElasticMaterial Foam::readElasticMaterial
+(
+    const dictionary& dict,
+    const checkedInput::magnitudes& magnitudes
+)
 {
     const brachDunn::ElasticMaterial material
     {
@@ -138,6 +142,10 @@ brachDunn::ElasticMaterial Foam::readElasticMaterial(const dictionary& dict)
         checkedInput::readNumber(dict, "nu")
     };
     checkedInput::coreCall(dict, [&]{ material.check(); });
+    magnitudes.check
+    (
+        dict, "E", material.E, brachDunn::magnitude::youngsModulus
+    );
     return material;
 }
 
@@ -148,7 +156,8 @@ Foam::wallInteractionEntry::wallInteractionEntry
 (
     const keyType& name,
     const dictionary& dict,
-    const particleMaterial& particle
+    const particleMaterial& particle,
+    const checkedInput::magnitudes& magnitudes
 )
 :
     name_(name),
@@ -173,7 +182,7 @@ Foam::wallInteractionEntry::wallInteractionEntry
     }
     else if (type_ == interaction::adhesive)
     {
-        readAdhesive(dict, particle);
+        readAdhesive(dict, particle, magnitudes);
     }
 }
 
@@ -224,7 +233,8 @@ void Foam::wallInteractionEntry::readRebound(const dictionary& dict)
 void Foam::wallInteractionEntry::readAdhesive
 (
     const dictionary& dict,
-    const particleMaterial& particle
+    const particleMaterial& particle,
+    const checkedInput::magnitudes& magnitudes
 )
 {
     checkedInput::requireKnownKeywords
@@ -237,10 +247,27 @@ void Foam::wallInteractionEntry::readAdhesive
         "patch entries of type adhesive"
     );
 
-    const brachDunn::ElasticMaterial wall = readElasticMaterial(dict);
+    const brachDunn::ElasticMaterial wall = readElasticMaterial(dict, magnitudes);
     const auto restitution =
         readLaw<brachDunn::RestitutionLaw>(dict, "restitution");
     const auto adhesion = readLaw<brachDunn::AdhesionLaw>(dict, "adhesion");
+    // A surface energy, or the power law's at 1 m/s, typed in mJ/m^2
+    if (const auto* law = adhesion.as<brachDunn::adhesion::Constant>())
+    {
+        magnitudes.check
+        (
+            dict.subDict("adhesion"), "gamma", law->gamma,
+            brachDunn::magnitude::surfaceEnergy
+        );
+    }
+    if (const auto* law = adhesion.as<brachDunn::adhesion::PowerLaw>())
+    {
+        magnitudes.check
+        (
+            dict.subDict("adhesion"), "c", law->c,
+            brachDunn::magnitude::surfaceEnergy
+        );
+    }
     // Sticking when absent; present, it must be a law's dictionary
     const auto friction =
         checkedInput::find(dict, "friction")

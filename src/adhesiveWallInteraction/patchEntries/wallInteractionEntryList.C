@@ -142,7 +142,8 @@ Foam::wallInteractionEntryList::wallInteractionEntryList
 (
     const dictionary& coeffs,
     const UList<patch>& patches,
-    const wallInteractionEntry::particleMaterial& particle
+    const wallInteractionEntry::particleMaterial& particle,
+    const checkedInput::magnitudes& magnitudes
 )
 :
     entries_(),
@@ -161,7 +162,7 @@ Foam::wallInteractionEntryList::wallInteractionEntryList
     {
         dictionary entryDict(coeffs, e.dict());
         entryDict.name() = coeffs.name() + ".patches." + e.keyword();
-        entries_.emplace_back(e.keyword(), entryDict, particle);
+        entries_.emplace_back(e.keyword(), entryDict, particle, magnitudes);
     }
 
     for (std::size_t entryi = 0; entryi < entries_.size(); ++entryi)

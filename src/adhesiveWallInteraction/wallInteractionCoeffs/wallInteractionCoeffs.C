@@ -13,8 +13,15 @@ using namespace Foam;
 //- Check the keywords first, then read capture
 bool readRemoveCaptured(const dictionary& coeffs, const wordList& baseKeywords)
 {
+    // The model's keywords and the base classes' (writeToFile is both)
     wordList valid(wallInteractionCoeffs::keywords);
-    valid.append(baseKeywords);
+    for (const word& keyword : baseKeywords)
+    {
+        if (!valid.found(keyword))
+        {
+            valid.append(keyword);
+        }
+    }
     checkedInput::requireKnownKeywords
     (
         coeffs, valid, "adhesiveWallInteraction coefficients"
@@ -78,7 +85,7 @@ scalarList readSizeClassEdges(const dictionary& coeffs)
 const Foam::wordList Foam::wallInteractionCoeffs::keywords
 {
     "particle", "capture", "writeFields", "outputByInjectorId", "sizeClasses",
-    "writeToFile", "maxImpactRecords", "patches"
+    "writeToFile", "maxImpactRecords", "patches", "logTables", "extremeValues"
 };
 
 
@@ -105,11 +112,19 @@ Foam::wallInteractionCoeffs::particle
         (
             *dict, {"E", "nu"}, "the particle's elastic constants"
         );
-        particle_ = particleConstants{readElasticMaterial(*dict), "particle"};
+        particle_ = particleConstants
+        {
+            readElasticMaterial(*dict, magnitudes_), "particle"
+        };
     }
     else if (cloudParticle)
     {
         checkedInput::coreCall(coeffs, [&]{ cloudParticle->check(); });
+        magnitudes_.check
+        (
+            coeffs, "constantProperties youngsModulus", cloudParticle->E,
+            brachDunn::magnitude::youngsModulus
+        );
         particle_ = particleConstants
         {
             *cloudParticle, "constantProperties youngsModulus, poissonsRatio"
@@ -145,12 +160,18 @@ Foam::wallInteractionCoeffs::wallInteractionCoeffs
     outputByInjectorId_(readOutputByInjectorId(coeffs)),
     maxImpactRecords_(checkedInput::readCount(coeffs, "maxImpactRecords", 0)),
     sizeClassEdges_(readSizeClassEdges(coeffs)),
+    logTables_(checkedInput::readSwitch(coeffs, "logTables", false)),
+    magnitudes_
+    {
+        checkedInput::readSwitch(coeffs, "extremeValues", false)
+    },
     particle_(),
     entries_
     (
         coeffs,
         patches,
-        [&]{ return particle(coeffs, cloudParticle).material; }
+        [&]{ return particle(coeffs, cloudParticle).material; },
+        magnitudes_
     )
 {
     // A particle given but not used is still checked

@@ -265,6 +265,62 @@ def compare_totals(reference, path, columns, rtol=1e-12):
     return n, problems
 
 
+def compare_last_rows(reference, path, columns, rtol=1e-12,
+                      keys=("injector", "dMin", "dMax")):
+    """The differences between the rows of two tables at their last times,
+    matched by the key columns, in the columns named, each to rtol relative
+    to the reference's; empty: none."""
+    from . import tables
+    a = tables.read(reference).last_time()
+    b = tables.read(path).last_time()
+    if not len(a) or not columns:
+        return ["nothing to compare"]
+
+    def keyed(table):
+        return {tuple(table.text(k)[row] for k in keys): row
+                for row in range(len(table))}
+    rows_a, rows_b = keyed(a), keyed(b)
+    if sorted(rows_a) != sorted(rows_b):
+        return [f"rows {sorted(rows_a)} in {reference}, {sorted(rows_b)} in {path}"]
+    problems = []
+    for key, row in rows_a.items():
+        for column in columns:
+            x, y = a[column][row], b[column][rows_b[key]]
+            if not close(y, x, rtol):
+                problems.append(f"{key} {column}: {fmt(x)} in {reference}, "
+                                f"{fmt(y)} in {path}")
+    return problems
+
+
+def log_lines_per_step(log):
+    """The log's lines per time step (between two "Time = " lines): the
+    number of steps, the median of the lines of a step but the last, the
+    model's summary lines ("adhesiveWallInteraction <patch> (parcels") and
+    full-table rows ("adhesiveWallInteraction patch ") of such a step (the
+    largest), and the lines and full-table rows of the last step (a write
+    time)."""
+    steps = []
+    with open(log) as f:
+        for line in f:
+            if line.startswith("Time = "):
+                steps.append([])
+            elif steps:
+                steps[-1].append(line)
+    if len(steps) < 2:
+        raise CheckError(f"{log}: fewer than two time steps")
+
+    def summary(step):
+        return sum(1 for l in step if re.search(
+            r"adhesiveWallInteraction \S+ \(parcels, particles\)", l))
+
+    def rows(step):
+        return sum(1 for l in step if "adhesiveWallInteraction patch " in l)
+    middle = steps[:-1]
+    return (len(steps), median([len(s) for s in middle]),
+            max(summary(s) for s in middle), max(rows(s) for s in middle),
+            len(steps[-1]), rows(steps[-1]))
+
+
 def time_range(path):
     """The first and the last time of a table with a time column, as
     written; a CheckError when it has no rows."""
@@ -488,6 +544,107 @@ def injected_mass(case=".",
     if not total:
         raise CheckError(f"{injectors}: no injector")
     return math.fsum(total)
+
+
+def _size_class(d, edges):
+    """The index of the size class of a diameter, classes bounded by the
+    edges (below the first, between two, above the last)."""
+    return sum(1 for edge in edges if not d < edge)
+
+
+QUANTITIES = ("injected", "captured", "escaped", "removed", "airborne")
+
+
+def expected_grade_efficiency(case=".", start_time="0",
+                              cloud="kinematicCloud"):
+    """Per size class, what gradeEfficiency.dat must hold at the last time,
+    counted independently of the model's counters: injected from the
+    injectors (constant/injectors: positions x nParticle, d, rho0),
+    captured and escaped from the impact records (impacts.csv), airborne
+    from the cloud's lagrangian files at the last written time (active
+    parcels), removed as the rest. {(dMin, dMax): {quantity: [parcels,
+    particles, mass]}}, the classes those of the file."""
+    from . import statistics, tables
+    grade = tables.read(os.path.join(
+        statistics.output_folder(case, cloud, start_time),
+        "gradeEfficiency.dat")).last_time()
+    classes = list(zip(grade["dMin"], grade["dMax"]))
+    edges = sorted({hi for _, hi in classes if math.isfinite(hi)})
+    rho = number(foam.value("constant/kinematicCloudProperties",
+                            "constantProperties/rho0", case=case), "rho0")
+    counts = {c: {q: [0.0, 0.0, 0.0] for q in QUANTITIES} for c in classes}
+
+    def add(quantity, d, n, parcels=1):
+        cell = counts[classes[_size_class(d, edges)]][quantity]
+        cell[0] += parcels
+        cell[1] += parcels * n
+        cell[2] += parcels * n * rho * math.pi * d**3 / 6
+
+    with open(os.path.join(case, "constant", "injectors")) as f:
+        injectors = foam.parse(f.read())
+    for name, injector in injectors.items():
+        d = number(injector["sizeDistribution"]["fixedValueDistribution"]
+                   ["value"], f"{name} d")
+        positions = len(foam.list_file(os.path.join(
+            case, "constant", injector["positionsFile"])))
+        add("injected", d, number(injector["nParticle"]), positions)
+    records = tables.read(os.path.join(
+        statistics.output_folder(case, cloud, start_time), "impacts.csv"))
+    for outcome, quantity in (("capture", "captured"), ("escape", "escaped")):
+        for d, n in zip(*(records.where(outcome=outcome)[c]
+                          for c in ("diameter", "nParticle"))):
+            add(quantity, d, n)
+    time = foam.latest_time(case)
+    folder = os.path.join(case, time, "lagrangian", cloud)
+    if foam.parcel_count(case, time, cloud):
+        fields = [foam.list_file(os.path.join(folder, name))
+                  for name in ("d", "nParticle", "active")]
+        for d, n, active in zip(*fields):
+            if active:
+                add("airborne", d, n)
+    for cell in counts.values():
+        cell["removed"] = [cell["injected"][i] - cell["captured"][i]
+                           - cell["escaped"][i] - cell["airborne"][i]
+                           for i in range(3)]
+    return counts
+
+
+def check_grade_efficiency(case=".", start_time="0", cloud="kinematicCloud",
+                           rtol=1e-12):
+    """The differences of gradeEfficiency.dat's last rows from
+    expected_grade_efficiency, and of its own closure (injected = captured
+    + escaped + removed + airborne) and capturedFraction; empty: none."""
+    from . import statistics, tables
+    grade = tables.read(os.path.join(
+        statistics.output_folder(case, cloud, start_time),
+        "gradeEfficiency.dat")).last_time()
+    expected = expected_grade_efficiency(case, start_time, cloud)
+    problems = []
+    for row in range(len(grade)):
+        key = (grade["dMin"][row], grade["dMax"][row])
+        values = {q: [grade[q + part][row] for part in
+                      ("Parcels", "Particles", "Mass")] for q in QUANTITIES}
+        for q in QUANTITIES:
+            for i, part in enumerate(("Parcels", "Particles", "Mass")):
+                want = expected[key][q][i]
+                if not (abs(values[q][i] - want)
+                        <= rtol * max(abs(want), values["injected"][i])):
+                    problems.append(f"class {key}: {q}{part} "
+                                    f"{fmt(values[q][i])}, expected {fmt(want)}")
+        for i, part in enumerate(("Parcels", "Particles", "Mass")):
+            rest = sum(values[q][i] for q in QUANTITIES[1:])
+            if not abs(values["injected"][i] - rest) \
+                    <= rtol * values["injected"][i]:
+                problems.append(f"class {key}: {part} injected "
+                                f"{fmt(values['injected'][i])} != {fmt(rest)}")
+        fraction = values["captured"][1] / values["injected"][1] \
+            if values["injected"][1] else 0
+        if not close(grade["capturedFraction"][row], fraction, 1e-12):
+            problems.append(f"class {key}: capturedFraction "
+                            f"{grade['capturedFraction'][row]}, expected {fraction}")
+    if not len(grade):
+        problems.append("gradeEfficiency.dat: no rows")
+    return problems
 
 
 def steps(case="."):
@@ -1011,6 +1168,30 @@ def _boundary_sum(path, *patches):
 def _injected_mass(case="."):
     """The mass the manual injectors of constant/injectors inject [kg]."""
     print(fmt(injected_mass(case)))
+
+
+@command("compareLastRows", "REFERENCE FILE RTOL COLUMN...", 4, ANY)
+def _compare_last_rows(reference, path, rtol, *columns):
+    """Two tables' rows at their last times, matched by injector, dMin and
+    dMax, in the columns named."""
+    _report(compare_last_rows(reference, path, columns, number(rtol)),
+            f"{path}: the rows of {reference}")
+
+
+@command("logLinesPerStep", "LOG", 1)
+def _log_lines_per_step(log):
+    """steps, median lines a step, the model's summary lines and table rows
+    of a step, the last step's lines and table rows (see
+    log_lines_per_step)."""
+    print(" ".join(fmt(v) for v in log_lines_per_step(log)))
+
+
+@command("gradeEfficiency", "[CASE [START_TIME [CLOUD]]]", 0, 3)
+def _grade_efficiency(case=".", start_time="0", cloud="kinematicCloud"):
+    """gradeEfficiency.dat's last rows against the injectors, the impact
+    records and the lagrangian files (and its own closure)."""
+    _report(check_grade_efficiency(case, start_time, cloud),
+            "gradeEfficiency.dat: every class as counted independently")
 
 
 @command("parcelCount", "[CASE [TIME [CLOUD]]]", 0, 3)

@@ -88,3 +88,10 @@ def plot_size_classes(path, classes, title=""):
     ax.set_ylim(0, 1.05)
     ax.set_title(title)
     plots.save(fig, path)
+
+
+def read_grade_efficiency(case=".", cloud="kinematicCloud", start_time="0"):
+    """gradeEfficiency.dat: per time, injector and size class, what became
+    of the parcels injected (the model writes it with writeToFile)."""
+    return tables.read(os.path.join(output_folder(case, cloud, start_time),
+                                    "gradeEfficiency.dat"))

@@ -94,6 +94,26 @@ scalarList listOption
 }
 
 
+//- The diameters asked for, each checked as a magnitude too (5 typed for
+//  5 um stops)
+scalarList diameterList
+(
+    const argList& args,
+    const tools::caseWallModel& wallModel
+)
+{
+    const scalarList diameters = listOption(args, "diameters", scalarList());
+    for (const scalar d : diameters)
+    {
+        wallModel.checkMagnitude
+        (
+            args, "diameters", d, brachDunn::magnitude::diameter
+        );
+    }
+    return diameters;
+}
+
+
 //- The one value a list option may hold (-diagnostics)
 scalar single(const argList& args, const word& name, const scalarList& values)
 {
@@ -369,7 +389,7 @@ void critical
     criticalSpeeds
     (
         os, entry.model(), wallModel.particleDensity(args),
-        listOption(args, "diameters", scalarList()),
+        diameterList(args, wallModel),
         listOption(args, "angles", scalarList(1, Zero)), method, series
     );
 }
@@ -384,7 +404,7 @@ void diagnose
     const word& patchName
 )
 {
-    const scalarList diameters = listOption(args, "diameters", scalarList());
+    const scalarList diameters = diameterList(args, wallModel);
     const scalarList speeds = listOption(args, "speeds", scalarList());
     const scalarList angles = listOption(args, "angles", scalarList(1, Zero));
     writeDiagnostics
@@ -460,7 +480,7 @@ int main(int argc, char *argv[])
         sweep
         (
             os, entry, wallModel.particleDensity(args),
-            listOption(args, "diameters", scalarList()),
+            diameterList(args, wallModel),
             listOption(args, "speeds", scalarList()),
             listOption(args, "angles", scalarList(1, Zero)), series
         );

@@ -1,0 +1,92 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
+// Magnitudes that can only be unit mistakes stop with the value meant;
+// values outside the model's range are warned about; extremeValues takes
+// a mistake-looking value as it is. The bounds are the materials data of
+// Plausibility.H (gelatin about 1e4 Pa, diamond 1.22e12 Pa, osmium 22590
+// kg/m^3, aerosols 1 nm to 100 um, diamond's work of adhesion about 11
+// J/m^2).
+
+#include "Plausibility.H"
+
+#include <gtest/gtest.h>
+
+using namespace brachDunn;
+
+namespace
+{
+
+//- The requirement of the InputError a value raises ("" when none)
+std::string stops(const Magnitude& m, const std::string& keyword, double value)
+{
+    try
+    {
+        checkMagnitude(m, keyword, value);
+        return "";
+    }
+    catch (const InputError& err)
+    {
+        EXPECT_EQ(err.keyword(), keyword);
+        return err.what();
+    }
+}
+
+bool has(const std::string& text, const std::string& part)
+{
+    return text.find(part) != std::string::npos;
+}
+
+} // End anonymous namespace
+
+
+TEST(Plausibility, YoungsModulusTypedInGPa)
+{
+    const std::string steel = stops(magnitude::youngsModulus, "E", 320);
+    EXPECT_TRUE(has(steel, "E = 320: a Young's modulus in Pa; 320 Pa is softer"
+        " than any solid this model describes; did you mean 3.2e+11 (320 GPa)?"))
+        << steel;
+    EXPECT_TRUE(has(stops(magnitude::youngsModulus, "E", 70), "7e+10 (70 GPa)"));
+    // A polymer typed in MPa: GPa would be stiffer than diamond
+    EXPECT_TRUE(has(stops(magnitude::youngsModulus, "E", 2500), "2.5e+09 (2500 MPa)"));
+    // Stiffer than diamond
+    EXPECT_TRUE(has(stops(magnitude::youngsModulus, "E", 3.2e14), "stiffer than any solid"));
+    // The bounds
+    EXPECT_EQ(stops(magnitude::youngsModulus, "E", 1e4), "");
+    EXPECT_NE(stops(magnitude::youngsModulus, "E", 9.9e3), "");
+    EXPECT_EQ(stops(magnitude::youngsModulus, "E", 1.22e12), "");
+}
+
+
+TEST(Plausibility, PhysicalButOutsideTheModelWarns)
+{
+    // Steel typed in MPa is an elastomer's modulus: no check can tell
+    EXPECT_EQ(stops(magnitude::youngsModulus, "E", 2.1e5), "");
+    EXPECT_TRUE(has(checkMagnitude(magnitude::youngsModulus, "E", 2.1e5),
+                    "outside the range the model was made for"));
+    EXPECT_EQ(checkMagnitude(magnitude::youngsModulus, "E", 3.2e11), "");
+    EXPECT_TRUE(has(checkMagnitude(magnitude::diameter, "d", 2e-3), "outside"));
+    EXPECT_EQ(checkMagnitude(magnitude::diameter, "d", 5e-6), "");
+    // No adhesion is not a small one
+    EXPECT_EQ(checkMagnitude(magnitude::surfaceEnergy, "gamma", 0), "");
+    EXPECT_TRUE(has(checkMagnitude(magnitude::surfaceEnergy, "gamma", 1e-4), "outside"));
+}
+
+
+TEST(Plausibility, DensityDiameterAndSurfaceEnergy)
+{
+    EXPECT_TRUE(has(stops(magnitude::density, "rho0", 1.35), "1350 (1.35 g/cm^3)"));
+    EXPECT_TRUE(has(stops(magnitude::density, "rho0", 25000), "denser than any material"));
+    EXPECT_EQ(stops(magnitude::density, "rho0", 25), "");
+    EXPECT_TRUE(has(stops(magnitude::diameter, "d", 5), "5e-06 (5 um)"));
+    EXPECT_TRUE(has(stops(magnitude::diameter, "d", 1e-10), "smaller than any particle"));
+    EXPECT_EQ(stops(magnitude::diameter, "d", 1e-2), "");
+    EXPECT_TRUE(has(stops(magnitude::surfaceEnergy, "gamma", 50), "0.05 (50 mJ/m^2)"));
+    EXPECT_EQ(stops(magnitude::surfaceEnergy, "gamma", 15), "");
+}
+
+
+TEST(Plausibility, ExtremeValuesTakesTheValue)
+{
+    const std::string w = checkMagnitude(magnitude::youngsModulus, "E", 320, true);
+    EXPECT_TRUE(has(w, "did you mean 3.2e+11")) << w;
+    EXPECT_TRUE(has(w, "taken as given")) << w;
+}
