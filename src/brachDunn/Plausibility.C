@@ -1,8 +1,8 @@
 // adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 #include "Plausibility.H"
 
-#include <cmath>
 #include <cstdlib>
+#include <string>
 
 namespace brachDunn
 {
@@ -18,9 +18,19 @@ std::string meant(const Magnitude& m, const double value)
     {
         for (const Magnitude::Slip& slip : m.slips)
         {
-            // 10^e is exact for these powers: divide for negative ones
-            const double ten = std::pow(10.0, std::abs(slip.exponent));
-            const double si = slip.exponent >= 0 ? value*ten : value/ten;
+            // The value's decimal text with the exponent added, read back:
+            // the number meant, correctly rounded (4.9 um is 4.9e-06 m)
+            const std::string text = toText(value);
+            const auto e = text.find('e');
+            const int exponent =
+                slip.exponent
+              + (e == std::string::npos ? 0 : std::stoi(text.substr(e + 1)));
+            // (strtod: a result beyond the doubles is no error here)
+            const double si = std::strtod
+            (
+                (text.substr(0, e) + "e" + std::to_string(exponent)).c_str(),
+                nullptr
+            );
             const bool inside =
                 strict
               ? si >= m.validFrom && si <= m.validTo

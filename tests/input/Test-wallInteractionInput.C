@@ -326,6 +326,8 @@ std::vector<inputCase> cases()
              "patches.floor.restitution"}},
         {"missingP", {set("floor", "restitution { type powerLaw; k 45.3; }")},
             {"keyword 'p' = missing"}},
+        {"misspeltP", {set("floor", "restitution { type powerLaw; k 45.3; pp 0.7; }")},
+            {"keyword 'p' = missing", "given instead: pp"}},
         {"R", {set("floor", "restitution { type constant; R 1.5; }")},
             {"keyword 'R' = 1.5", "must be in [0, 1]"}},
         {"gamma", {set("floor", "adhesion { type constant; gamma -1; }")},
@@ -366,7 +368,11 @@ std::vector<inputCase> cases()
              "needs the particle's elastic constants"}},
         {"modelKeyword", {set("", "writeToFiles yes")},
             {"keyword 'writeToFiles' = yes",
-             "not a keyword of adhesiveWallInteraction coefficients"}},
+             "not a keyword of adhesiveWallInteraction coefficients",
+             // writeToFile, a keyword of the model and of the base class,
+             // listed once (v1912's base keywords follow the model's)
+             "maxImpactRecords patches logTables extremeValues U"
+             " defaultCoeffs writePrecision useUserTime"}},
         {"sizeClassesOrder", {set("", "sizeClasses (2e-6 1e-6)")},
             {"keyword 'sizeClasses' = (2e-06 1e-06)", "increase strictly"}},
         // Coefficients that used to overflow at the first impact

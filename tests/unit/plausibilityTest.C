@@ -3,7 +3,8 @@
 // values outside the model's range are warned about; extremeValues takes
 // a mistake-looking value as it is. The bounds are the materials data of
 // Plausibility.H (gelatin about 1e4 Pa, diamond 1.22e12 Pa, osmium 22590
-// kg/m^3, aerosols 1 nm to 100 um, diamond's work of adhesion about 11
+// kg/m^3, aerosols 1 nm to 100 um (OpenFOAM's clouds up to centimetres),
+// diamond's work of adhesion about 11
 // J/m^2).
 
 #include "Plausibility.H"
@@ -78,7 +79,12 @@ TEST(Plausibility, DensityDiameterAndSurfaceEnergy)
     EXPECT_EQ(stops(magnitude::density, "rho0", 25), "");
     EXPECT_TRUE(has(stops(magnitude::diameter, "d", 5), "5e-06 (5 um)"));
     EXPECT_TRUE(has(stops(magnitude::diameter, "d", 1e-10), "smaller than any particle"));
-    EXPECT_EQ(stops(magnitude::diameter, "d", 1e-2), "");
+    // millimetre to centimetre particles of coal, sprays and beds are real
+    EXPECT_EQ(stops(magnitude::diameter, "d", 0.011), "");
+    EXPECT_EQ(stops(magnitude::diameter, "d", 0.1), "");
+    EXPECT_NE(stops(magnitude::diameter, "d", 0.5), "");
+    // a suggestion beyond the doubles is no suggestion, and no crash
+    EXPECT_NE(stops(magnitude::diameter, "d", 1e-300), "");
     EXPECT_TRUE(has(stops(magnitude::surfaceEnergy, "gamma", 50), "0.05 (50 mJ/m^2)"));
     EXPECT_EQ(stops(magnitude::surfaceEnergy, "gamma", 15), "");
 }
@@ -89,4 +95,13 @@ TEST(Plausibility, ExtremeValuesTakesTheValue)
     const std::string w = checkMagnitude(magnitude::youngsModulus, "E", 320, true);
     EXPECT_TRUE(has(w, "did you mean 3.2e+11")) << w;
     EXPECT_TRUE(has(w, "taken as given")) << w;
+}
+
+
+TEST(Plausibility, TheValueMeantIsTheDecimalOne)
+{
+    // 4.9 um is 4.9e-06 m, not 4.9/1e6; values written with an exponent too
+    EXPECT_TRUE(has(stops(magnitude::diameter, "d", 4.9), "4.9e-06 (4.9 um)"));
+    EXPECT_TRUE(has(stops(magnitude::youngsModulus, "E", 2e-2), "2e+07 (0.02 GPa)"));
+    EXPECT_TRUE(has(stops(magnitude::surfaceEnergy, "gamma", 1.5e2), "0.15 (150 mJ/m^2)"));
 }

@@ -185,6 +185,128 @@ void Foam::AdhesiveWallInteraction<CloudType>::updateGradeEfficiency()
         };
     }
     grade_->update(parcels);
+    if (gradeFile_)
+    {
+        grade_->write(*gradeFile_, compat::timeName(this->owner().mesh().time()));
+    }
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::printSettings() const
+{
+    const std::vector<std::string>* warningLists[] =
+    {
+        &coeffs_.entries().warnings(), coeffs_.magnitudes().warnings.get()
+    };
+    for (const auto* warnings : warningLists)
+    {
+        for (const std::string& warning : *warnings)
+        {
+            WarningInFunction << warning.c_str() << endl;
+        }
+    }
+    if (coeffs_.particle())
+    {
+        const auto& particle = *coeffs_.particle();
+        Info<< "    particle: E " << particle.material.E << " nu "
+            << particle.material.nu << " (" << particle.origin.c_str() << ")"
+            << nl;
+    }
+    for (const wallInteractionEntry& entry : coeffs_.entries().entries())
+    {
+        Info<< "    " << entry.describe().c_str() << nl;
+    }
+
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::openFiles
+(
+    const word& cloudName
+)
+{
+    const bool files = coeffs_.writeToFile() || coeffs_.maxImpactRecords() > 0;
+    if (files && Pstream::master())
+    {
+        mkDir(outputDir());
+    }
+    if (coeffs_.maxImpactRecords() > 0)
+    {
+        records_ = std::make_shared<impactRecords>
+        (
+            outputDir()/"impacts.csv",
+            coeffs_.maxImpactRecords(),
+            coeffs_.entries().patchNames()
+        );
+    }
+    if (coeffs_.writeToFile() && Pstream::master())
+    {
+        statisticsFile_ = std::make_shared<OFstream>(outputDir()/"statistics.dat");
+        statistics_.writeHeader(*statisticsFile_, cloudName);
+        balance_.writeTo(outputDir()/"massBalance.dat", cloudName);
+        gradeFile_ = std::make_shared<OFstream>(outputDir()/"gradeEfficiency.dat");
+        grade_->writeHeader(*gradeFile_, cloudName);
+    }
+}
+
+
+template<class CloudType>
+bool Foam::AdhesiveWallInteraction<CloudType>::declined
+(
+    const typename CloudType::parcelType& p,
+    const polyPatch& pp,
+    const wallInteractionEntry& entry
+)
+{
+    if (isA<wallPolyPatch>(pp))
+    {
+        // Declined, OpenFOAM would leave the parcel on the wall face and
+        // the time step would never end: stop with the reason instead
+        FatalErrorInFunction
+            << "Parcel at " << compat::position(p, this->owner().mesh())
+            << " hit the wall patch " << pp.name() << ", whose entry "
+            << entry.name() << " has type none: nothing would move it"
+            << " off the wall. Give walls an adhesive, rebound, stick or"
+            << " escape entry" << exit(FatalError);
+    }
+    if (grade_)
+    {
+        // OpenFOAM removes it: a system escape
+        grade_->leaving
+        (
+            gradeGroup(p), p.nParticle(), p.nParticle()*p.mass(),
+            p.origProc(), p.origId()
+        );
+    }
+    return false;
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::checkDiameter
+(
+    const typename CloudType::parcelType& p,
+    const polyPatch& pp
+) const
+{
+    // A diameter that can only be a unit mistake (5 typed for 5 um): no
+    // injector's size said so at the start (a table of sizes)
+    const brachDunn::Magnitude& diameter = brachDunn::magnitude::diameter;
+    if
+    (
+        (p.d() > diameter.mistakeAbove || p.d() < diameter.mistakeBelow)
+     && !coeffs_.magnitudes().extreme
+    )
+    {
+        FatalErrorInFunction
+            << "Parcel at " << compat::position(p, this->owner().mesh())
+            << " on patch " << pp.name() << ": "
+            << brachDunn::unitMistake(diameter, "d", p.d()).c_str()
+            << " (extremeValues yes; takes it as it is)" << nl
+            << exit(FatalError);
+    }
 }
 
 
@@ -218,29 +340,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     (
         cloud, this->dict(), typeName, coeffs_.magnitudes()
     );
-    const std::vector<std::string>* warningLists[] =
-    {
-        &coeffs_.entries().warnings(), coeffs_.magnitudes().warnings.get()
-    };
-    for (const auto* warnings : warningLists)
-    {
-        for (const std::string& warning : *warnings)
-        {
-            WarningInFunction << warning.c_str() << endl;
-        }
-    }
-    if (coeffs_.particle())
-    {
-        const auto& particle = *coeffs_.particle();
-        Info<< "    particle: E " << particle.material.E << " nu "
-            << particle.material.nu << " (" << particle.origin.c_str() << ")"
-            << nl;
-    }
-    for (const wallInteractionEntry& entry : coeffs_.entries().entries())
-    {
-        Info<< "    " << entry.describe().c_str() << nl;
-    }
-
+    printSettings();
     if (coeffs_.writeFields())
     {
         deposits_ = std::make_shared<depositFields>(cloud.mesh(), cloud.name());
@@ -260,28 +360,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     }
     restore();
 
-    const bool files = coeffs_.writeToFile() || coeffs_.maxImpactRecords() > 0;
-    if (files && Pstream::master())
-    {
-        mkDir(outputDir());
-    }
-    if (coeffs_.maxImpactRecords() > 0)
-    {
-        records_ = std::make_shared<impactRecords>
-        (
-            outputDir()/"impacts.csv",
-            coeffs_.maxImpactRecords(),
-            coeffs_.entries().patchNames()
-        );
-    }
-    if (coeffs_.writeToFile() && Pstream::master())
-    {
-        statisticsFile_ = std::make_shared<OFstream>(outputDir()/"statistics.dat");
-        statistics_.writeHeader(*statisticsFile_, cloud.name());
-        balance_.writeTo(outputDir()/"massBalance.dat", cloud.name());
-        gradeFile_ = std::make_shared<OFstream>(outputDir()/"gradeEfficiency.dat");
-        grade_->writeHeader(*gradeFile_, cloud.name());
-    }
+    openFiles(cloud.name());
 }
 
 
@@ -306,46 +385,9 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
     }
     if (entry->type() == wallInteractionEntry::interaction::none)
     {
-        if (isA<wallPolyPatch>(pp))
-        {
-            // Declined, OpenFOAM would leave the parcel on the wall face and
-            // the time step would never end: stop with the reason instead
-            FatalErrorInFunction
-                << "Parcel at " << compat::position(p, this->owner().mesh())
-                << " hit the wall patch " << pp.name() << ", whose entry "
-                << entry->name() << " has type none: nothing would move it"
-                << " off the wall. Give walls an adhesive, rebound, stick or"
-                << " escape entry" << exit(FatalError);
-        }
-        if (grade_)
-        {
-            // OpenFOAM removes it: a system escape
-            grade_->leaving
-            (
-                gradeGroup(p),
-                p.nParticle(), p.nParticle()*p.mass(), p.origProc(),
-                p.origId()
-            );
-        }
-        return false;
+        return declined(p, pp, *entry);
     }
-
-    // A diameter that can only be a unit mistake (5 typed for 5 um): no
-    // injector's size said so at the start (a table of sizes)
-    const brachDunn::Magnitude& diameter = brachDunn::magnitude::diameter;
-    if
-    (
-        (p.d() > diameter.mistakeAbove || p.d() < diameter.mistakeBelow)
-     && !coeffs_.magnitudes().extreme
-    )
-    {
-        FatalErrorInFunction
-            << "Parcel at " << compat::position(p, this->owner().mesh())
-            << " on patch " << pp.name() << ": "
-            << brachDunn::unitMistake(diameter, "d", p.d()).c_str()
-            << " (extremeValues yes; takes it as it is)" << nl
-            << exit(FatalError);
-    }
+    checkDiameter(p, pp);
 
     vector nw, Up;
     this->owner().patchData(p, pp, nw, Up);
@@ -414,13 +456,6 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
     if (grade_)
     {
         updateGradeEfficiency();
-        if (gradeFile_)
-        {
-            grade_->write
-            (
-                *gradeFile_, compat::timeName(this->owner().mesh().time())
-            );
-        }
     }
 
     // The first step fixes the initial mass; write times print the balance
@@ -437,19 +472,29 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
     if (this->writeTime())
     {
         balance_.write(os, compat::timeName(this->owner().mesh().time()));
-        this->setModelProperty("initialMass", balance_.storedText());
-        if (grade_)
-        {
-            this->setModelProperty("gradeEfficiency", grade_->storedText());
-        }
-        forAll(statistics_.patchNames(), patch)
-        {
-            this->setModelProperty
-            (
-                statistics_.patchNames()[patch],
-                statistics_.storedText(totals, patch)
-            );
-        }
-        statistics_.store(totals);
+        store(totals);
     }
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::store
+(
+    const List<fateStatistics::row>& totals
+)
+{
+    this->setModelProperty("initialMass", balance_.storedText());
+    if (grade_)
+    {
+        this->setModelProperty("gradeEfficiency", grade_->storedText());
+    }
+    forAll(statistics_.patchNames(), patch)
+    {
+        this->setModelProperty
+        (
+            statistics_.patchNames()[patch],
+            statistics_.storedText(totals, patch)
+        );
+    }
+    statistics_.store(totals);
 }

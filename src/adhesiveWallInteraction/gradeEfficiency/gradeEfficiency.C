@@ -193,6 +193,12 @@ void Foam::gradeEfficiency::update(const List<parcel>& parcels)
     countedAtImpact_.clear();
     step_ = row();
 
+    addStep(now);
+}
+
+
+void Foam::gradeEfficiency::addStep(const List<row>& now)
+{
     // Removed: what left a class otherwise since the last step
     forAll(totals_, g)
     {
@@ -204,19 +210,15 @@ void Foam::gradeEfficiency::update(const List<parcel>& parcels)
                 t[airborne].*part + n[injected].*part - n[captured].*part
               - n[escaped].*part - n[airborne].*part;
         };
-        sums leaving;
-        leaving.parcels = removedPart(&sums::parcels);
-        leaving.particles = removedPart(&sums::particles);
-        leaving.mass = removedPart(&sums::mass);
+        t[removed].parcels += removedPart(&sums::parcels);
+        t[removed].particles += removedPart(&sums::particles);
+        t[removed].mass += removedPart(&sums::mass);
         for (const quantity q : {injected, captured, escaped})
         {
             t[q].parcels += n[q].parcels;
             t[q].particles += n[q].particles;
             t[q].mass += n[q].mass;
         }
-        t[removed].parcels += leaving.parcels;
-        t[removed].particles += leaving.particles;
-        t[removed].mass += leaving.mass;
         t[airborne] = n[airborne];
     }
 }
