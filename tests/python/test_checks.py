@@ -84,6 +84,10 @@ def test_close_small_between_sums():
     assert not checks.small(2e-24, 1e-12, 1e-12)
     # No scale, nothing to compare with
     assert not checks.small(0, 1e-12, 0)
+    # 2.48010025e-4 m against 2.4801e-4 m: 2.5e-11 m, 1.25e-6 of 20 um
+    assert checks.near(2.48010025e-4, 2.4801e-4, 2e-6, 20e-6)
+    assert not checks.near(2.48010025e-4, 2.4801e-4, 1e-6, 20e-6)
+    assert not checks.near(1, 1, 1, 0)
     assert checks.between(0.5, 0, 1)
     assert not checks.between(0, 0, 1)
     assert checks.between(1e300, 0, float("inf"))

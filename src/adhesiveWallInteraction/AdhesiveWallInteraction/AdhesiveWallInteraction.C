@@ -22,6 +22,8 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
 (
     const typename CloudType::parcelType& p,
     const polyPatch& pp,
+    const label facei,
+    const label faceProc,
     const wallImpact& impact
 )
 {
@@ -48,16 +50,15 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
         );
     }
 
-    const label facei = pp.whichFace(p.face());
     if (deposits_ && impact.outcome != Fate::rebound)
     {
         if (impact.outcome == Fate::capture)
         {
-            deposits_->addCapture(pp.index(), facei, mass, nParticle);
+            deposits_->addCapture(pp.index(), facei, mass, nParticle, faceProc);
         }
         else
         {
-            deposits_->addEscape(pp.index(), facei, mass);
+            deposits_->addEscape(pp.index(), facei, mass, faceProc);
         }
     }
 
@@ -227,6 +228,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::openFiles
     const word& cloudName
 )
 {
+    filesDir_ = outputDir();
     const bool files = coeffs_.writeToFile() || coeffs_.maxImpactRecords() > 0;
     if (files && Pstream::master())
     {
@@ -374,10 +376,6 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
     bool& keepParticle
 )
 {
-    using brachDunn::Fate;
-    constexpr bool colliding =
-        wallInteractionCloud::isColliding<typename CloudType::parcelType>::value;
-
     const wallInteractionEntry* entry = coeffs_.entries().entryOf(pp.index());
     if (!entry)
     {
@@ -389,8 +387,112 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
     }
     checkDiameter(p, pp);
 
+    if (contacts_ && contacts_->handles(pp.index()))
+    {
+        contacts_->addCentre(pp.index());
+    }
+
     vector nw, Up;
     this->owner().patchData(p, pp, nw, Up);
+    return interact
+    (
+        p, pp, pp.whichFace(p.face()), -1, nw, Up, *entry, keepParticle
+    );
+}
+
+
+template<class CloudType>
+bool Foam::AdhesiveWallInteraction<CloudType>::touch
+(
+    typename CloudType::parcelType& p,
+    const label patchi,
+    const label facei,
+    const label faceProc,
+    const vector& nw,
+    bool& keepParticle
+)
+{
+    const polyPatch& pp = compat::boundaryMesh(this->owner().mesh())[patchi];
+    const wallInteractionEntry* entry = coeffs_.entries().entryOf(patchi);
+    if (!entry || entry->type() == wallInteractionEntry::interaction::none)
+    {
+        return false;
+    }
+    checkDiameter(p, pp);
+    if (contacts_)
+    {
+        contacts_->addSurface(patchi);
+    }
+    return interact(p, pp, facei, faceProc, nw, Zero, *entry, keepParticle);
+}
+
+
+template<class CloudType>
+Foam::labelList Foam::AdhesiveWallInteraction<CloudType>::wallPatches() const
+{
+    using interaction = wallInteractionEntry::interaction;
+    DynamicList<label> patches;
+    forAll(compat::boundaryMesh(this->owner().mesh()), patchi)
+    {
+        const wallInteractionEntry* entry = coeffs_.entries().entryOf(patchi);
+        if
+        (
+            entry
+         && entry->type() != interaction::escape
+         && entry->type() != interaction::none
+        )
+        {
+            patches.append(patchi);
+        }
+    }
+    return labelList(patches);
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::countSurfaceContacts()
+{
+    if (contacts_)
+    {
+        return;
+    }
+    const polyBoundaryMesh& patches = compat::boundaryMesh(this->owner().mesh());
+    const labelList walls(wallPatches());
+    wordList names(walls.size());
+    forAll(walls, i)
+    {
+        names[i] = patches[walls[i]].name();
+    }
+    contacts_ = std::make_shared<surfaceContactCounts>(walls, names, patches.size());
+
+    labelList stored;
+    this->getModelProperty("surfaceContact", stored);
+    contacts_->restore(stored);
+
+    if (coeffs_.writeToFile() && Pstream::master())
+    {
+        contactFile_ = std::make_shared<OFstream>(filesDir_/"surfaceContact.dat");
+        contacts_->writeHeader(*contactFile_, this->owner().name());
+    }
+}
+
+
+template<class CloudType>
+bool Foam::AdhesiveWallInteraction<CloudType>::interact
+(
+    typename CloudType::parcelType& p,
+    const polyPatch& pp,
+    const label facei,
+    const label faceProc,
+    const vector& nw,
+    const vector& Up,
+    const wallInteractionEntry& entry,
+    bool& keepParticle
+)
+{
+    using brachDunn::Fate;
+    constexpr bool colliding =
+        wallInteractionCloud::isColliding<typename CloudType::parcelType>::value;
 
     vector omega = Zero;
     if constexpr (colliding)
@@ -401,7 +503,7 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
     wallImpact impact;
     try
     {
-        impact = entry->impact(p.d(), p.rho(), p.U() - Up, nw, omega);
+        impact = entry.impact(p.d(), p.rho(), p.U() - Up, nw, omega);
     }
     catch (const brachDunn::InputError& err)
     {
@@ -419,9 +521,9 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
     impact.U += Up;
     keepParticle = apply
     (
-        p, impact, entry->type() == wallInteractionEntry::interaction::adhesive
+        p, impact, entry.type() == wallInteractionEntry::interaction::adhesive
     );
-    count(p, pp, impact);
+    count(p, pp, facei, faceProc, impact);
     return true;
 }
 
@@ -456,6 +558,10 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
     if (grade_)
     {
         updateGradeEfficiency();
+    }
+    if (contacts_)
+    {
+        writeSurfaceContacts();
     }
 
     // The first step fixes the initial mass; write times print the balance
@@ -497,4 +603,27 @@ void Foam::AdhesiveWallInteraction<CloudType>::store
         );
     }
     statistics_.store(totals);
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::writeSurfaceContacts()
+{
+    // Deposits on other processors' faces reach their fields first
+    if (deposits_)
+    {
+        deposits_->exchange();
+    }
+    const labelList totals(contacts_->totals());
+    if (contactFile_)
+    {
+        contacts_->write
+        (
+            *contactFile_, compat::timeName(this->owner().mesh().time()), totals
+        );
+    }
+    if (this->writeTime())
+    {
+        this->setModelProperty("surfaceContact", totals);
+    }
 }

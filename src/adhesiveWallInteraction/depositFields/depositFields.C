@@ -1,5 +1,6 @@
 // adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 #include "depositFields.H"
+#include "PstreamBuffers.H"
 #include "releaseCompat.H"
 #include "OSspecific.H"
 
@@ -52,7 +53,8 @@ Foam::depositFields::depositFields(const fvMesh& mesh, const word& cloudName)
     missing_(),
     massStick_(field(mesh, cloudName + ":massStick", dimMass, missing_)),
     nStick_(field(mesh, cloudName + ":nStick", dimless, missing_)),
-    massEscape_(field(mesh, cloudName + ":massEscape", dimMass, missing_))
+    massEscape_(field(mesh, cloudName + ":massEscape", dimMass, missing_)),
+    remote_(Pstream::nProcs())
 {}
 
 
@@ -74,3 +76,82 @@ Foam::wordList Foam::depositFields::missing() const
     }
     return result;
 }
+
+void Foam::depositFields::addCapture
+(
+    const label patchi,
+    const label facei,
+    const scalar mass,
+    const scalar nParticle,
+    const label proc
+)
+{
+    if (proc < 0 || proc == Pstream::myProcNo())
+    {
+        massStick_.boundaryFieldRef()[patchi][facei] += mass;
+        nStick_.boundaryFieldRef()[patchi][facei] += nParticle;
+    }
+    else
+    {
+        remote_[proc].append({scalar(patchi), scalar(facei), mass, nParticle, 0});
+    }
+}
+
+
+void Foam::depositFields::addEscape
+(
+    const label patchi,
+    const label facei,
+    const scalar mass,
+    const label proc
+)
+{
+    if (proc < 0 || proc == Pstream::myProcNo())
+    {
+        massEscape_.boundaryFieldRef()[patchi][facei] += mass;
+    }
+    else
+    {
+        remote_[proc].append({scalar(patchi), scalar(facei), 0, 0, mass});
+    }
+}
+
+
+void Foam::depositFields::exchange()
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(remote_, proci)
+    {
+        if (proci != Pstream::myProcNo())
+        {
+            UOPstream toProc(proci, buffers);
+            toProc << remote_[proci];
+            remote_[proci].clear();
+        }
+    }
+    buffers.finishedSends();
+    forAll(remote_, proci)
+    {
+        if (proci == Pstream::myProcNo())
+        {
+            continue;
+        }
+        UIPstream fromProc(proci, buffers);
+        scalarList received(fromProc);
+        for (label i = 0; i + 4 < received.size(); i += 5)
+        {
+            const label patchi = label(received[i]);
+            const label facei = label(received[i + 1]);
+            massStick_.boundaryFieldRef()[patchi][facei] += received[i + 2];
+            nStick_.boundaryFieldRef()[patchi][facei] += received[i + 3];
+            massEscape_.boundaryFieldRef()[patchi][facei] += received[i + 4];
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -2,5 +2,7 @@
 // adhesiveWallInteraction for the clouds of type basicKinematicCollidingCloud
 #include "basicKinematicCollidingCloud.H"
 #include "AdhesiveWallInteraction.H"
+#include "AdhesiveWallSurfaceContact.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicKinematicCollidingCloud);
+makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicKinematicCollidingCloud);

@@ -2,5 +2,7 @@
 // adhesiveWallInteraction for the clouds of type basicHeterogeneousReactingCloud
 #include "basicHeterogeneousReactingCloud.H"
 #include "AdhesiveWallInteraction.H"
+#include "AdhesiveWallSurfaceContact.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicHeterogeneousReactingCloud);
+makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicHeterogeneousReactingCloud);

@@ -2,5 +2,7 @@
 // adhesiveWallInteraction for the clouds of type basicKinematicCloud
 #include "basicKinematicCloud.H"
 #include "AdhesiveWallInteraction.H"
+#include "AdhesiveWallSurfaceContact.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicKinematicCloud);
+makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicKinematicCloud);

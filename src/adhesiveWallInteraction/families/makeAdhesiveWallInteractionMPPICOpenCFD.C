@@ -2,5 +2,7 @@
 // adhesiveWallInteraction for the clouds of type basicKinematicMPPICCloud
 #include "basicKinematicMPPICCloud.H"
 #include "AdhesiveWallInteraction.H"
+#include "AdhesiveWallSurfaceContact.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicKinematicMPPICCloud);
+makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicKinematicMPPICCloud);

@@ -2,5 +2,7 @@
 // adhesiveWallInteraction for the clouds of type basicReactingMultiphaseCloud
 #include "basicReactingMultiphaseCloud.H"
 #include "AdhesiveWallInteraction.H"
+#include "AdhesiveWallSurfaceContact.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicReactingMultiphaseCloud);
+makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicReactingMultiphaseCloud);

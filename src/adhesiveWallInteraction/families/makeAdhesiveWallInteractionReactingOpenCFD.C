@@ -2,5 +2,7 @@
 // adhesiveWallInteraction for the clouds of type basicReactingCloud
 #include "basicReactingCloud.H"
 #include "AdhesiveWallInteraction.H"
+#include "AdhesiveWallSurfaceContact.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicReactingCloud);
+makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicReactingCloud);

@@ -3,5 +3,7 @@
 // (lagrangian/spray: sprayFoam and its relatives)
 #include "basicSprayCloud.H"
 #include "AdhesiveWallInteraction.H"
+#include "AdhesiveWallSurfaceContact.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicSprayCloud);
+makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicSprayCloud);

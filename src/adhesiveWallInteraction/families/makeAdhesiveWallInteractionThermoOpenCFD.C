@@ -2,5 +2,7 @@
 // adhesiveWallInteraction for the clouds of type basicThermoCloud
 #include "basicThermoCloud.H"
 #include "AdhesiveWallInteraction.H"
+#include "AdhesiveWallSurfaceContact.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicThermoCloud);
+makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicThermoCloud);

@@ -73,6 +73,12 @@ def small(value, rtol, scale):
     return scale > 0 and abs(value) <= rtol * scale
 
 
+def near(value, expected, rtol, scale):
+    """True when |value - expected| <= rtol scale and scale > 0 (a position
+    against the expected one, to a fraction of the particle's size)."""
+    return scale > 0 and abs(value - expected) <= rtol * scale
+
+
 def sums_to(total, rtol, parts):
     """True when the parts add up to the total to rtol relative, the total
     > 0 (a balance: what went in against where it went)."""
@@ -1096,6 +1102,15 @@ def _small(value, rtol, scale, what="value"):
                  number(scale, "SCALE")):
         raise CheckError(f"{what}: {value} is not within {rtol} of {scale}"
                          " (which must be > 0)")
+
+
+@command("near", "VALUE EXPECTED RTOL SCALE [WHAT]", 4, 5)
+def _near(value, expected, rtol, scale, what="value"):
+    """|VALUE - EXPECTED| <= RTOL SCALE, with SCALE > 0."""
+    if not near(number(value, what), number(expected, "EXPECTED"),
+                number(rtol, "RTOL"), number(scale, "SCALE")):
+        raise CheckError(f"{what}: {value} is not within {rtol} x {scale}"
+                         f" of {expected}")
 
 
 @command("sumsTo", "TOTAL RTOL PART...", 3, ANY)

@@ -1,0 +1,192 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
+
+#include "AdhesiveWallSurfaceContact.H"
+#include "checkedInput.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::AdhesiveWallSurfaceContact<CloudType>::setUp()
+{
+    const polyMesh& mesh = this->owner().mesh();
+    if (mesh.moving() || mesh.topoChanging())
+    {
+        FatalErrorInFunction
+            << "Cloud function " << this->modelName() << " (type "
+            << typeName << ") of cloud " << this->owner().name()
+            << ": the mesh moves or changes, and contact at the surface is"
+            << " written for static meshes only. Remove " << this->modelName()
+            << " from cloudFunctions (contact at the centre, OpenFOAM's own)"
+            << exit(FatalError);
+    }
+    if (walls_)
+    {
+        return;
+    }
+
+    model_ = dynamic_cast<AdhesiveWallInteraction<CloudType>*>
+    (
+        &this->owner().patchInteraction()
+    );
+    if (!model_)
+    {
+        FatalErrorInFunction
+            << "Cloud function " << this->modelName() << " (type "
+            << typeName << ") of cloud " << this->owner().name()
+            << " needs patchInteractionModel adhesiveWallInteraction, not "
+            << this->owner().patchInteraction().type() << exit(FatalError);
+    }
+    model_->countSurfaceContacts();
+    walls_ = std::make_shared<wallTriangles>
+    (
+        mesh, model_->wallPatches(), 0.5*maxDiameter_
+    );
+    Info<< "    " << this->modelName() << ": contact at the surface with "
+        << returnReduce(walls_->size() - walls_->nRemote(), sumOp<label>())
+        << " wall triangles of " << model_->wallPatches().size()
+        << " patches, " << returnReduce(walls_->nRemote(), sumOp<label>())
+        << " held by a neighbouring processor, reach "
+        << 0.5*maxDiameter_ << " m" << endl;
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallSurfaceContact<CloudType>::checkDiameter
+(
+    const typename CloudType::parcelType& p
+) const
+{
+    if (p.d() > maxDiameter_)
+    {
+        FatalErrorInFunction
+            << "Cloud function " << this->modelName() << " of cloud "
+            << this->owner().name() << ": a parcel of diameter " << p.d()
+            << " m at " << compat::position(p, this->owner().mesh())
+            << " is larger than maxDiameter " << maxDiameter_
+            << " m, so walls it touches could be missed. Set maxDiameter to"
+            << " the largest diameter of the parcels" << exit(FatalError);
+    }
+}
+
+
+template<class CloudType>
+bool Foam::AdhesiveWallSurfaceContact<CloudType>::wedged
+(
+    const typename CloudType::parcelType& p,
+    const scalar fraction
+)
+{
+    const labelPair parcel(p.origProc(), p.origId());
+    if (fraction > 0 || parcel != wedged_)
+    {
+        wedged_ = parcel;
+        wedgedContacts_ = 0;
+        return false;
+    }
+    return ++wedgedContacts_ > 100;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::AdhesiveWallSurfaceContact<CloudType>::AdhesiveWallSurfaceContact
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& modelName
+)
+:
+    CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
+    maxDiameter_(checkedInput::readNumber(this->coeffDict(), "maxDiameter"))
+{
+    if (!(maxDiameter_ > 0))
+    {
+        checkedInput::fail
+        (
+            this->coeffDict(), "maxDiameter",
+            std::to_string(maxDiameter_), "a diameter > 0 [m]"
+        );
+    }
+}
+
+
+template<class CloudType>
+Foam::AdhesiveWallSurfaceContact<CloudType>::AdhesiveWallSurfaceContact
+(
+    const AdhesiveWallSurfaceContact<CloudType>& other
+)
+:
+    CloudFunctionObject<CloudType>(other),
+    maxDiameter_(other.maxDiameter_),
+    walls_(other.walls_),
+    model_(other.model_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::AdhesiveWallSurfaceContact<CloudType>::preEvolve()
+{
+    setUp();
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallSurfaceContact<CloudType>::postMove
+(
+    typename CloudType::parcelType& p,
+    const scalar dt,
+    const point& position0,
+    bool& keepParticle
+)
+{
+    // Only moving parcels in cells within reach of a handled wall pay
+    if (!compat::isActive(p) || !keepParticle || !walls_->nearWall(p.cell()))
+    {
+        return;
+    }
+    checkDiameter(p);
+
+    const point end = compat::position(p, this->owner().mesh());
+    const std::optional<brachDunn::Contact> contact =
+        walls_->firstContact(p.cell(), position0, end, 0.5*p.d());
+    if (!contact || wedged(p, contact->fraction))
+    {
+        return;
+    }
+
+    // Back to where the sphere touched, and the step's time with it
+    const scalar back = 1 - contact->fraction;
+    if (back > 0)
+    {
+        compat::trackWithinCell
+        (
+            p,
+            -back*(end - position0),
+            -back*dt/this->owner().solution().trackTime()
+        );
+    }
+
+    // The wall normal out of the domain, from the centre to the closest
+    // point (a centre on the wall, a parcel of zero size: the direction of
+    // motion)
+    const point centre = compat::position(p, this->owner().mesh());
+    const wallTriangles::origin& origin = walls_->originOf(contact->triangle);
+    const point touched(contact->point.x, contact->point.y, contact->point.z);
+    vector nw = touched - centre;
+    if (mag(nw) <= VSMALL)
+    {
+        nw = end - position0;
+    }
+    nw /= mag(nw);
+
+    model_->touch
+    (
+        p, origin.patchi, origin.facei, origin.proc, nw, keepParticle
+    );
+}
+
+
+// ************************************************************************* //
