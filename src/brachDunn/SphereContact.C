@@ -23,21 +23,18 @@ inline double magSqr(const Vector3& v)
 }
 
 
-//- A triangle prepared for the queries: its vertices, its edges
-//  edge[i] = vertex[i + 1] - vertex[i] and, unless degenerate, its unit
-//  normal (oriented as (b - a) x (c - a))
-struct Face
-{
-    Vector3 vertex[3];
-    Vector3 edge[3];
-    Vector3 normal;
-    bool flat;
-};
+using Face = PreparedTriangle;
+
+} // End anonymous namespace
 
 
-Face faceOf(const Triangle& t)
+PreparedTriangle prepare(const Triangle& t)
 {
-    Face f{{t.a, t.b, t.c}, {t.b - t.a, t.c - t.b, t.a - t.c}, {}, false};
+    Face f{{t.a, t.b, t.c}, {t.b - t.a, t.c - t.b, t.a - t.c}, {}, false, {}, {}};
+    f.lower = {std::min({t.a.x, t.b.x, t.c.x}), std::min({t.a.y, t.b.y, t.c.y}),
+               std::min({t.a.z, t.b.z, t.c.z})};
+    f.upper = {std::max({t.a.x, t.b.x, t.c.x}), std::max({t.a.y, t.b.y, t.c.y}),
+               std::max({t.a.z, t.b.z, t.c.z})};
 
     const double lenSqr[3] =
         {magSqr(f.edge[0]), magSqr(f.edge[1]), magSqr(f.edge[2])};
@@ -67,6 +64,15 @@ Face faceOf(const Triangle& t)
     f.normal = (1/std::sqrt(nSqr))*n;
     f.flat = true;
     return f;
+}
+
+
+namespace
+{
+
+inline Face faceOf(const Triangle& t)
+{
+    return prepare(t);
 }
 
 
@@ -181,7 +187,7 @@ bool quadraticRoots(double a, double b, double c, double& t0, double& t1)
 //  apart: no contact then (a cheap test for the many triangles far away)
 bool boxesApart
 (
-    const Triangle& t,
+    const Face& f,
     const Vector3& A,
     const Vector3& B,
     double r
@@ -189,8 +195,8 @@ bool boxesApart
 {
     for (double Vector3::*axis : {&Vector3::x, &Vector3::y, &Vector3::z})
     {
-        const double lower = std::min({t.a.*axis, t.b.*axis, t.c.*axis});
-        const double upper = std::max({t.a.*axis, t.b.*axis, t.c.*axis});
+        const double lower = f.lower.*axis;
+        const double upper = f.upper.*axis;
         if
         (
             upper < std::min(A.*axis, B.*axis) - r
@@ -201,6 +207,22 @@ bool boxesApart
         }
     }
     return false;
+}
+
+
+//- Whether the triangle's box and the box [lower, upper] (around a swept
+//  sphere) are apart
+inline bool boxesApart
+(
+    const Face& f,
+    const Vector3& lower,
+    const Vector3& upper
+)
+{
+    return
+        f.upper.x < lower.x || f.lower.x > upper.x
+     || f.upper.y < lower.y || f.lower.y > upper.y
+     || f.upper.z < lower.z || f.lower.z > upper.z;
 }
 
 
@@ -221,13 +243,18 @@ std::optional<double> sweep
         return lambda >= 0 && lambda <= 1 && lambda < earliest;
     };
 
-    // Face: the signed height h0 + lambda hd of the centre is +-r
+    // Face: the signed height h0 + lambda hd of the centre is +-r. Where
+    // the centre, from farther than r, first comes within r of the plane
+    // over the triangle, that is the contact: no point of the triangle is
+    // nearer than the plane (the usual approach to a wall, without edges
+    // and vertices).
     if (f.flat)
     {
         const double h0 = dot(f.normal, A - f.vertex[0]);
         const double hd = dot(f.normal, d);
         if (hd != 0)
         {
+            const double entering = (h0 > 0 ? r - h0 : -r - h0)/hd;
             for (const double side : {r, -r})
             {
                 const double lambda = (side - h0)/hd;
@@ -235,6 +262,10 @@ std::optional<double> sweep
                 {
                     earliest = lambda;
                 }
+            }
+            if (std::abs(h0) > r && earliest == entering)
+            {
+                return earliest;
             }
         }
     }
@@ -340,11 +371,11 @@ std::optional<double> firstContact
 )
 {
     checkSegment(A, B, r);
-    if (boxesApart(t, A, B, r))
+    const Face f = faceOf(t);
+    if (boxesApart(f, A, B, r))
     {
         return std::nullopt;
     }
-    const Face f = faceOf(t);
     if (magSqr(A - closestPoint(f, A)) <= r*r)
     {
         return 0.0;
@@ -360,7 +391,7 @@ std::optional<double> firstContact
 
 std::optional<Contact> firstContact
 (
-    const std::vector<Triangle>& triangles,
+    const std::vector<PreparedTriangle>& triangles,
     const int* candidatesBegin,
     const int* candidatesEnd,
     const Vector3& A,
@@ -392,7 +423,7 @@ std::optional<Contact> firstContact
         const double tolSqr = 1e-12*r*r;
         for (int k = 0; k < nOverlapped; ++k)
         {
-            const Face f = faceOf(triangles[overlapped[k]]);
+            const Face& f = triangles[overlapped[k]];
             if (magSqr(point - closestPoint(f, point)) <= tolSqr)
             {
                 return true;
@@ -402,38 +433,10 @@ std::optional<Contact> firstContact
     };
 
     // At A: in contact when overlapping and approaching (of several, the
-    // nearest)
+    // nearest). Along the segment: the first contacts of the triangles out
+    // of reach at A.
     std::optional<Contact> atStart;
     double atStartDistSqr = 0;
-    for (const int* index = candidatesBegin; index != candidatesEnd; ++index)
-    {
-        const Triangle& t = triangles[*index];
-        if (boxesApart(t, A, A, r))
-        {
-            continue;
-        }
-        const Vector3 point = closestPoint(faceOf(t), A);
-        const double distSqr = magSqr(A - point);
-        if (distSqr <= r*r)
-        {
-            if (dot(d, A - point) >= 0)
-            {
-                overlap(*index);
-            }
-            else if (!atStart || distSqr < atStartDistSqr)
-            {
-                atStart = Contact{0, point, *index};
-                atStartDistSqr = distSqr;
-            }
-        }
-    }
-    if (atStart || !moving)
-    {
-        return atStart;
-    }
-
-    // Along the segment: the first contacts of the triangles out of reach
-    // at A, earliest first (as early: nearest first)
     struct Hit
     {
         double fraction;
@@ -442,26 +445,71 @@ std::optional<Contact> firstContact
     };
     static thread_local std::vector<Hit> hits;
     hits.clear();
+    const Vector3 lower
+    {
+        std::min(A.x, B.x) - r, std::min(A.y, B.y) - r, std::min(A.z, B.z) - r
+    };
+    const Vector3 upper
+    {
+        std::max(A.x, B.x) + r, std::max(A.y, B.y) + r, std::max(A.z, B.z) + r
+    };
     for (const int* index = candidatesBegin; index != candidatesEnd; ++index)
     {
-        const Triangle& t = triangles[*index];
-        if (boxesApart(t, A, B, r))
+        const Face& f = triangles[*index];
+        // Both ends farther than r from the plane, on one side: the whole
+        // swept sphere is (most triangles near a parcel, cheaply); A
+        // farther than r from the plane: no contact at A
+        bool nearAtA = true;
+        if (f.flat)
+        {
+            const double hA = dot(f.normal, A - f.vertex[0]);
+            const double hB = dot(f.normal, B - f.vertex[0]);
+            if ((hA > r && hB > r) || (hA < -r && hB < -r))
+            {
+                continue;
+            }
+            nearAtA = std::abs(hA) <= r;
+        }
+        if (boxesApart(f, lower, upper))
         {
             continue;
         }
-        const Face f = faceOf(t);
-        if (magSqr(A - closestPoint(f, A)) <= r*r)
+        if (nearAtA)
         {
-            continue;
+            const Vector3 point = closestPoint(f, A);
+            const double distSqr = magSqr(A - point);
+            if (distSqr <= r*r)
+            {
+                if (dot(d, A - point) >= 0)
+                {
+                    overlap(*index);
+                }
+                else if (!atStart || distSqr < atStartDistSqr)
+                {
+                    atStart = Contact{0, point, *index};
+                    atStartDistSqr = distSqr;
+                }
+                continue;
+            }
         }
-        const std::optional<double> lambda = sweep(f, A, d, r);
-        if (lambda)
+        if (moving && !atStart)
         {
-            const Vector3 centre = A + *lambda*d;
-            const Vector3 point = closestPoint(f, centre);
-            hits.push_back
-            ({*lambda, magSqr(centre - point), Contact{*lambda, point, *index}});
+            const std::optional<double> lambda = sweep(f, A, d, r);
+            if (lambda)
+            {
+                const Vector3 centre = A + *lambda*d;
+                const Vector3 touched = closestPoint(f, centre);
+                hits.push_back
+                ({
+                    *lambda, magSqr(centre - touched),
+                    Contact{*lambda, touched, *index}
+                });
+            }
         }
+    }
+    if (atStart || hits.empty())
+    {
+        return atStart;
     }
     std::sort
     (
@@ -496,14 +544,16 @@ std::optional<Contact> firstContact
     double r
 )
 {
+    std::vector<PreparedTriangle> prepared(triangles.size());
     std::vector<int> all(triangles.size());
     for (std::size_t i = 0; i < all.size(); ++i)
     {
+        prepared[i] = prepare(triangles[i]);
         all[i] = int(i);
     }
     return firstContact
     (
-        triangles, all.data(), all.data() + all.size(), A, B, r
+        prepared, all.data(), all.data() + all.size(), A, B, r
     );
 }
 

@@ -812,6 +812,11 @@ TEST(SphereContact, SeveralAgainstEachAlone)
         }
 
         // Over the candidates 1, 3, 5 only: the earliest of those alone
+        std::vector<PreparedTriangle> prepared;
+        for (const Triangle& t : triangles)
+        {
+            prepared.push_back(prepare(t));
+        }
         const std::vector<int> odd{1, 3, 5};
         std::optional<double> earliestOdd;
         int earliestOddIndex = -1;
@@ -825,7 +830,7 @@ TEST(SphereContact, SeveralAgainstEachAlone)
             }
         }
         const auto contactOdd =
-            firstContact(triangles, odd.data(), odd.data() + 3, A, B, r);
+            firstContact(prepared, odd.data(), odd.data() + 3, A, B, r);
         ASSERT_EQ(bool(contactOdd), bool(earliestOdd)) << i;
         if (contactOdd)
         {
@@ -885,6 +890,43 @@ TEST(SphereContact, AlongAPlaneOfSeveralTriangles)
     (
         firstContact(half, {0.5, 0.5, 1.02*r}, {1.5, 0.5, 1.02*r}, r)
     );
+}
+
+
+TEST(SphereContact, FromBesideThePlaneOverTheTriangle)
+{
+    // A starts within r of the triangle's plane but beside the triangle
+    // and rises over it: the edge x = 0 is touched first, before the
+    // centre leaves the slab |z| < r over the triangle. Expected: the first
+    // lambda where the reference distance is r, sampled and bisected.
+    const Triangle t{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    const double r = 0.1;
+    const Vector3 A{-0.15, 0.2, 0.02}, B{0.35, 0.2, 0.17};
+    double below = 0, above = 1;
+    for (int i = 1; i <= 100000; ++i)
+    {
+        if (referenceDistance(t, A + (i/100000.0)*(B - A)) <= r)
+        {
+            below = (i - 1)/100000.0;
+            above = i/100000.0;
+            break;
+        }
+    }
+    // (by hand: (-0.15 + 0.5 l)^2 + (0.02 + 0.15 l)^2 = r^2, l = 0.114;
+    // the slab is left at l = 0.533)
+    ASSERT_GT(above, 0.1);
+    ASSERT_LT(above, 0.12);
+    for (int i = 0; i < 60; ++i)
+    {
+        const double mid = 0.5*(below + above);
+        (referenceDistance(t, A + mid*(B - A)) <= r ? above : below) = mid;
+    }
+    const auto lambda = firstContact(t, A, B, r);
+    ASSERT_TRUE(lambda);
+    EXPECT_NEAR(*lambda, above, 1e-12);
+    const auto several = firstContact(std::vector<Triangle>{t}, A, B, r);
+    ASSERT_TRUE(several);
+    EXPECT_NEAR(several->fraction, above, 1e-12);
 }
 
 

@@ -172,7 +172,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::postMove
     // The wall normal out of the domain, from the centre to the closest
     // point (a centre on the wall, a parcel of zero size: the direction of
     // motion)
-    const point centre = compat::position(p, this->owner().mesh());
+    const point centre = position0 + contact->fraction*(end - position0);
     const wallTriangles::origin& origin = walls_->originOf(contact->triangle);
     const point touched(contact->point.x, contact->point.y, contact->point.z);
     vector nw = touched - centre;

@@ -24,19 +24,31 @@ Foam::point toFoam(const brachDunn::Vector3& p)
 
 
 //- The triangle's bounding box grown by reach
-Foam::treeBoundBox grownBox(const brachDunn::Triangle& t, const Foam::scalar reach)
+Foam::treeBoundBox grownBox
+(
+    const brachDunn::PreparedTriangle& t,
+    const Foam::scalar reach
+)
 {
-    using Foam::min;
-    using Foam::max;
-    const Foam::point a(toFoam(t.a)), b(toFoam(t.b)), c(toFoam(t.c));
     const Foam::vector grow(reach, reach, reach);
-    return Foam::treeBoundBox(min(a, min(b, c)) - grow, max(a, max(b, c)) + grow);
+    return Foam::treeBoundBox(toFoam(t.lower) - grow, toFoam(t.upper) + grow);
 }
 
 } // End anonymous namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::wallTriangles::add
+(
+    const brachDunn::Triangle& t,
+    const origin& from
+)
+{
+    triangles_.push_back(brachDunn::prepare(t));
+    origins_.push_back(from);
+}
+
 
 void Foam::wallTriangles::addLocal
 (
@@ -56,13 +68,15 @@ void Foam::wallTriangles::addLocal
             const label base = max(basePoints[pp.start() + facei], 0);
             for (label k = 1; k + 1 < f.size(); ++k)
             {
-                triangles_.push_back
-                ({
-                    toCore(points[f[base]]),
-                    toCore(points[f[(base + k) % f.size()]]),
-                    toCore(points[f[(base + k + 1) % f.size()]])
-                });
-                origins_.push_back({Pstream::myProcNo(), patchi, facei});
+                add
+                (
+                    {
+                        toCore(points[f[base]]),
+                        toCore(points[f[(base + k) % f.size()]]),
+                        toCore(points[f[(base + k + 1) % f.size()]])
+                    },
+                    {Pstream::myProcNo(), patchi, facei}
+                );
             }
         }
     }
@@ -99,12 +113,12 @@ void Foam::wallTriangles::addRemote(const polyMesh& mesh, const scalar reach)
         DynamicList<label> faces;
         for (label i = 0; i < nLocal; ++i)
         {
-            const brachDunn::Triangle& t = triangles_[i];
+            const brachDunn::PreparedTriangle& t = triangles_[i];
             if (boxes[proci].overlaps(grownBox(t, 0)))
             {
-                points.append(toFoam(t.a));
-                points.append(toFoam(t.b));
-                points.append(toFoam(t.c));
+                points.append(toFoam(t.vertex[0]));
+                points.append(toFoam(t.vertex[1]));
+                points.append(toFoam(t.vertex[2]));
                 faces.append(origins_[i].patchi);
                 faces.append(origins_[i].facei);
             }
@@ -126,13 +140,15 @@ void Foam::wallTriangles::addRemote(const polyMesh& mesh, const scalar reach)
         fromProc >> points >> faces;
         for (label i = 0; i < faces.size()/2; ++i)
         {
-            triangles_.push_back
-            ({
-                toCore(points[3*i]),
-                toCore(points[3*i + 1]),
-                toCore(points[3*i + 2])
-            });
-            origins_.push_back({proci, faces[2*i], faces[2*i + 1]});
+            add
+            (
+                {
+                    toCore(points[3*i]),
+                    toCore(points[3*i + 1]),
+                    toCore(points[3*i + 2])
+                },
+                {proci, faces[2*i], faces[2*i + 1]}
+            );
         }
     }
     nRemote_ = size() - nLocal;
@@ -175,6 +191,62 @@ void Foam::wallTriangles::addCandidates
 }
 
 
+void Foam::wallTriangles::groupByPlane(const scalar reach)
+{
+    const label nCells = label(cellStart_.size()) - 1;
+    cellPlaneStart_.assign(nCells + 1, 0);
+    planes_.clear();
+    std::vector<int> sorted;
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        const int begin = cellStart_[celli], end = cellStart_[celli + 1];
+        const std::size_t cellPlanes = planes_.size();
+        std::vector<int> planeOf(end - begin, -1);
+        for (int i = begin; i < end; ++i)
+        {
+            const brachDunn::PreparedTriangle& t = triangles_[cellTriangles_[i]];
+            const double offset = dot(t.normal, t.vertex[0]);
+            for (std::size_t k = cellPlanes; t.flat && k < planes_.size(); ++k)
+            {
+                const plane& p = planes_[k];
+                if
+                (
+                    p.flat
+                 && dot(p.normal, t.normal) >= 1 - 1e-12
+                 && std::abs(p.offset - offset) <= 1e-12*reach
+                )
+                {
+                    planeOf[i - begin] = int(k);
+                    break;
+                }
+            }
+            if (planeOf[i - begin] < 0)
+            {
+                planeOf[i - begin] = int(planes_.size());
+                planes_.push_back({t.normal, offset, t.flat, 0, 0});
+            }
+        }
+
+        // The cell's triangles in the order of their planes
+        sorted.clear();
+        for (std::size_t k = cellPlanes; k < planes_.size(); ++k)
+        {
+            planes_[k].first = begin + int(sorted.size());
+            for (int i = begin; i < end; ++i)
+            {
+                if (planeOf[i - begin] == int(k))
+                {
+                    sorted.push_back(cellTriangles_[i]);
+                }
+            }
+            planes_[k].last = begin + int(sorted.size());
+        }
+        std::copy(sorted.begin(), sorted.end(), cellTriangles_.begin() + begin);
+        cellPlaneStart_[celli + 1] = int(planes_.size());
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::wallTriangles::wallTriangles
@@ -187,6 +259,7 @@ Foam::wallTriangles::wallTriangles
     addLocal(mesh, patches);
     addRemote(mesh, reach);
     addCandidates(mesh, reach);
+    groupByPlane(reach);
 }
 
 
@@ -200,11 +273,36 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
     const scalar r
 ) const
 {
-    const int* begin = cellTriangles_.data() + cellStart_[celli];
-    const int* end = cellTriangles_.data() + cellStart_[celli + 1];
+    // The candidates of the planes the swept sphere reaches
+    static thread_local std::vector<int> reached;
+    reached.clear();
+    const brachDunn::Vector3 a(toCore(A)), b(toCore(B));
+    for (int k = cellPlaneStart_[celli]; k < cellPlaneStart_[celli + 1]; ++k)
+    {
+        const plane& p = planes_[k];
+        if (p.flat)
+        {
+            const double hA = dot(p.normal, a) - p.offset;
+            const double hB = dot(p.normal, b) - p.offset;
+            if ((hA > r && hB > r) || (hA < -r && hB < -r))
+            {
+                continue;
+            }
+        }
+        reached.insert
+        (
+            reached.end(),
+            cellTriangles_.begin() + p.first,
+            cellTriangles_.begin() + p.last
+        );
+    }
+    if (reached.empty())
+    {
+        return std::nullopt;
+    }
     return brachDunn::firstContact
     (
-        triangles_, begin, end, toCore(A), toCore(B), r
+        triangles_, reached.data(), reached.data() + reached.size(), a, b, r
     );
 }
 

@@ -1,8 +1,9 @@
 # adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 """fibreFilter: the single-fibre efficiency of a filter fibre.
 
-From the model's statistics of each sub-case U<U0>/d<d> and cloud (stick,
-adhesive):
+From the model's statistics of each particle sub-case U<U0>/particles and
+cloud (stick, adhesive), per injector (one per diameter, on the fibre's own
+mesh, contact at the particle's surface):
 
     results.csv      eta +- its standard error per face velocity, diameter
                      and wall model, with the Kuwabara-flow correlations
@@ -27,7 +28,7 @@ import os
 from .. import correlations, foam, statistics, tables
 
 CLOUDS = ("stick", "adhesive")
-ANGLE_CASES = ("U0.1/d2e-6", "U2/d2e-6", "U2/d5e-6", "U2/d10e-6")
+ANGLE_CASES = (("0.1", "2e-6"), ("2", "2e-6"), ("2", "5e-6"), ("2", "10e-6"))
 
 
 class Filter:
@@ -48,20 +49,27 @@ class Filter:
             os.path.join(case, "particles/constant/positions"))]
         self.parcels = len(y)
         self.band = max(y) * self.parcels / (self.parcels - 1)
+        # The injectors, one per diameter: (injectorID, d as named, d)
+        injectors = foam.dictionary(
+            os.path.join(case, "particles/constant/injectors"), expand=False)
+        self.injectors = sorted(
+            ((entry["injectorID"], name[1:],
+              entry["sizeDistribution"]["fixedValueDistribution"]["value"])
+             for name, entry in injectors.items() if name != "FoamFile"),
+            key=lambda injector: injector[2])
 
     def stokes(self, d, U):
         return self.rhoP * d * d * U / (18 * self.mu * self.dFibre)
 
 
 def sub_cases(case="."):
-    """The sub-cases U<U0>/d<d>, as (folder, U0 text, d text), by U0 and d."""
-    found = []
-    for folder in glob.glob(os.path.join(case, "U*", "d*")):
-        U, d = folder.split(os.sep)[-2:]
-        found.append((os.path.relpath(folder, case), U[1:], d[1:]))
+    """The particle sub-cases U<U0>/particles, as (folder, U0 text), by
+    U0."""
+    found = [(os.path.relpath(folder, case), folder.split(os.sep)[-2][1:])
+             for folder in glob.glob(os.path.join(case, "U*", "particles"))]
     if not found:
-        raise ValueError("no sub-cases U*/d*: run ./Allrun")
-    return sorted(found, key=lambda s: (float(s[1]), float(s[2])))
+        raise ValueError("no sub-cases U*/particles: run ./Allrun")
+    return sorted(found, key=lambda s: float(s[1]))
 
 
 RESULT_COLUMNS = ["U0", "d", "Stk", "R", "Re_f", "model", "parcels",
@@ -71,14 +79,16 @@ RESULT_COLUMNS = ["U0", "d", "Stk", "R", "Re_f", "model", "parcels",
 
 def result_rows(fibre, subs):
     rows = []
-    for U_text in dict.fromkeys(U for _, U, _ in subs):
+    for folder, U in subs:
         for cloud in CLOUDS:
-            for folder, U, d_text in subs:
-                if U != U_text:
-                    continue
-                last = statistics.read_statistics(folder, cloud).last_time()
-                captured = last.sum("captureParcels")
-                escaped = last.sum("escapeParcels")
+            last = statistics.read_statistics(folder, cloud).last_time()
+            for injector, d_text, _ in fibre.injectors:
+                of = last.where(injector=injector)
+                if not len(of):
+                    raise ValueError(f"no statistics of injector {injector}"
+                                     f" in {folder}, cloud {cloud}")
+                captured = of.sum("captureParcels")
+                escaped = of.sum("escapeParcels")
                 U0, d = float(U), float(d_text)
                 n = fibre.parcels
                 R = d / fibre.dFibre
@@ -119,21 +129,24 @@ def angle_rows(fibre, case="."):
     stagnation point (both sides together), from the impact records (the
     particle's centre at the contact), for small and large Stokes numbers."""
     rows = []
-    for sub in ANGLE_CASES:
-        if not os.path.isdir(os.path.join(case, sub)):
+    for U, d in ANGLE_CASES:
+        folder = os.path.join(case, f"U{U}", "particles")
+        if not os.path.isdir(folder):
             continue
-        U, d = sub.split("/")
         for cloud in CLOUDS:
-            impacts = statistics.read_impacts(os.path.join(case, sub), cloud)
+            impacts = statistics.read_impacts(folder, cloud)
             captured = impacts.where(patch="fibre", outcome="capture")
             bins = [0] * 18
-            for x, y, n in zip(captured["x"], captured["y"],
-                               captured["nParticle"]):
+            for x, y, diameter, n in zip(captured["x"], captured["y"],
+                                         captured["diameter"],
+                                         captured["nParticle"]):
+                if diameter != float(d):
+                    continue
                 angle = math.atan2(abs(y), -x) * 180 / math.pi
                 bins[min(int(angle / 10), 17)] += n
-            stk = fibre.stokes(float(d[1:]), float(U[1:]))
+            stk = fibre.stokes(float(d), float(U))
             for i, n in enumerate(bins):
-                rows.append([sub, U[1:], d[1:], "%.3g" % stk, cloud,
+                rows.append([f"U{U}/d{d}", U, d, "%.3g" % stk, cloud,
                              "%d" % (10 * i + 5), "%d" % n])
     return rows
 
@@ -222,7 +235,7 @@ def run(case="."):
     os.chdir(case)
     fibre = Filter()
     subs = sub_cases()
-    for folder, _, _ in subs:
+    for folder, _ in subs:
         for cloud in CLOUDS:
             for name in ("statistics.dat", "impacts.csv"):
                 path = os.path.join(statistics.output_folder(folder, cloud),
