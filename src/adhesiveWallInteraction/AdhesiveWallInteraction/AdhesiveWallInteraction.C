@@ -423,7 +423,32 @@ bool Foam::AdhesiveWallInteraction<CloudType>::touch
     {
         contacts_->addSurface(patchi);
     }
-    return interact(p, pp, facei, faceProc, nw, Zero, *entry, keepParticle);
+    const bool local = faceProc < 0 || faceProc == Pstream::myProcNo();
+    const vector Up = local ? wallVelocity(p, pp, facei, nw) : Zero;
+    return interact(p, pp, facei, faceProc, nw, Up, *entry, keepParticle);
+}
+
+
+template<class CloudType>
+Foam::vector Foam::AdhesiveWallInteraction<CloudType>::wallVelocity
+(
+    const typename CloudType::parcelType& p,
+    const polyPatch& pp,
+    const label facei,
+    const vector& nw
+) const
+{
+    // As KinematicCloud::patchData on a static mesh: the tangential part
+    // of a wall's velocity that its boundary condition sets (a lid, a belt)
+    const fvPatchVectorField& Uw1 = this->owner().U().boundaryField()[pp.index()];
+    if (!isA<wallPolyPatch>(pp) || !Uw1.fixesValue())
+    {
+        return Zero;
+    }
+    const vector& Uw0 =
+        this->owner().U().oldTime().boundaryField()[pp.index()][facei];
+    const vector Uw = Uw0 + p.currentTimeFraction()*(Uw1[facei] - Uw0);
+    return Uw - (nw & Uw)*nw;
 }
 
 
