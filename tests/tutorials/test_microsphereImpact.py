@@ -10,8 +10,11 @@ the numbers of the files it writes, with these tolerances:
 - per diameter, the parcels captured and rebounded on the plate in the
   model's statistics (one size class per diameter) are those of the impact
   records (results.csv);
+- contact at the particle's surface: every impact on the plate happens
+  with the sphere's centre d/2 above it (to 1e-9 d), none at the centre;
 - the results are those of the awk post-processing this package replaced
-  (tests/golden/microsphereImpact/reduced);
+  (tests/golden/microsphereImpact/reduced): surface contact changes where
+  the impacts happen, not their velocities;
 - the headline table, the plot and the .foam file are written, no FOAM
   FATAL, no NaN;
 - the committed parcel tables are what microsphere_impact.parcel_rows makes
@@ -75,6 +78,18 @@ def test_statistics_per_size_class_equal_records(case, results):
         of = results.where(diameter=lambda t: lo <= float(t) < hi)
         assert captured == len(of.where(solverCaptured="1"))
         assert rebound == len(of.where(solverCaptured="0"))
+
+
+def test_impacts_where_the_surface_touches(case):
+    impacts = statistics.read_impacts(case).where(patch="plate")
+    assert len(impacts) == 40
+    for z, d in zip(impacts["z"], impacts["diameter"]):
+        assert abs(z - d / 2) <= 1e-9 * d, (z, d)
+    contacts = tables.read(os.path.join(
+        statistics.output_folder(case), "surfaceContact.dat"))
+    last = contacts.where(time=contacts["time"][-1])
+    assert last.where(patch="plate").sum("surfaceContacts") == 40
+    assert last.sum("centreContacts") == 0
 
 
 def test_same_results_as_before_the_port(case):

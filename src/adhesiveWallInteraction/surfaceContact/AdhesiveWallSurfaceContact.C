@@ -158,21 +158,21 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::postMove
     }
 
     // Back to where the sphere touched, and the step's time with it
-    const scalar back = 1 - contact->fraction;
-    if (back > 0)
+    const point centre = position0 + contact->fraction*(end - position0);
+    if (contact->fraction < 1)
     {
-        compat::trackWithinCell
+        compat::moveBackTo
         (
             p,
-            -back*(end - position0),
-            -back*dt/this->owner().solution().trackTime()
+            centre - end,
+            centre,
+            (1 - contact->fraction)*dt/this->owner().solution().trackTime()
         );
     }
 
     // The wall normal out of the domain, from the centre to the closest
     // point (a centre on the wall, a parcel of zero size: the direction of
     // motion)
-    const point centre = position0 + contact->fraction*(end - position0);
     const wallTriangles::origin& origin = walls_->originOf(contact->triangle);
     const point touched(contact->point.x, contact->point.y, contact->point.z);
     vector nw = touched - centre;
