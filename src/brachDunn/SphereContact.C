@@ -70,12 +70,6 @@ PreparedTriangle prepare(const Triangle& t)
 namespace
 {
 
-inline Face faceOf(const Triangle& t)
-{
-    return prepare(t);
-}
-
-
 //- Whether the projection of p on the plane of the flat face f lies in it
 //  (boundary included); the part of p - vertex along the normal adds
 //  nothing to normal.(edge x (p - vertex))
@@ -183,46 +177,30 @@ bool quadraticRoots(double a, double b, double c, double& t0, double& t1)
 }
 
 
-//- Whether the boxes around the triangle and around the swept sphere are
-//  apart: no contact then (a cheap test for the many triangles far away)
-bool boxesApart
-(
-    const Face& f,
-    const Vector3& A,
-    const Vector3& B,
-    double r
-)
+//- The box around the sphere of radius r swept from A to B
+struct Box
 {
-    for (double Vector3::*axis : {&Vector3::x, &Vector3::y, &Vector3::z})
+    Vector3 lower, upper;
+};
+
+Box sweptBox(const Vector3& A, const Vector3& B, double r)
+{
+    return
     {
-        const double lower = f.lower.*axis;
-        const double upper = f.upper.*axis;
-        if
-        (
-            upper < std::min(A.*axis, B.*axis) - r
-         || lower > std::max(A.*axis, B.*axis) + r
-        )
-        {
-            return true;
-        }
-    }
-    return false;
+        {std::min(A.x, B.x) - r, std::min(A.y, B.y) - r, std::min(A.z, B.z) - r},
+        {std::max(A.x, B.x) + r, std::max(A.y, B.y) + r, std::max(A.z, B.z) + r}
+    };
 }
 
 
-//- Whether the triangle's box and the box [lower, upper] (around a swept
-//  sphere) are apart
-inline bool boxesApart
-(
-    const Face& f,
-    const Vector3& lower,
-    const Vector3& upper
-)
+//- Whether the boxes around the triangle and around the swept sphere are
+//  apart: no contact then (a cheap test for the many triangles far away)
+inline bool boxesApart(const Face& f, const Box& swept)
 {
     return
-        f.upper.x < lower.x || f.lower.x > upper.x
-     || f.upper.y < lower.y || f.lower.y > upper.y
-     || f.upper.z < lower.z || f.lower.z > upper.z;
+        f.upper.x < swept.lower.x || f.lower.x > swept.upper.x
+     || f.upper.y < swept.lower.y || f.lower.y > swept.upper.y
+     || f.upper.z < swept.lower.z || f.lower.z > swept.upper.z;
 }
 
 
@@ -358,7 +336,7 @@ void checkSegment(const Vector3& A, const Vector3& B, double r)
 
 Vector3 closestPoint(const Triangle& t, const Vector3& p)
 {
-    return closestPoint(faceOf(t), p);
+    return closestPoint(prepare(t), p);
 }
 
 
@@ -371,8 +349,8 @@ std::optional<double> firstContact
 )
 {
     checkSegment(A, B, r);
-    const Face f = faceOf(t);
-    if (boxesApart(f, A, B, r))
+    const Face f = prepare(t);
+    if (boxesApart(f, sweptBox(A, B, r)))
     {
         return std::nullopt;
     }
@@ -445,14 +423,7 @@ std::optional<Contact> firstContact
     };
     static thread_local std::vector<Hit> hits;
     hits.clear();
-    const Vector3 lower
-    {
-        std::min(A.x, B.x) - r, std::min(A.y, B.y) - r, std::min(A.z, B.z) - r
-    };
-    const Vector3 upper
-    {
-        std::max(A.x, B.x) + r, std::max(A.y, B.y) + r, std::max(A.z, B.z) + r
-    };
+    const Box swept = sweptBox(A, B, r);
     for (const int* index = candidatesBegin; index != candidatesEnd; ++index)
     {
         const Face& f = triangles[*index];
@@ -470,7 +441,7 @@ std::optional<Contact> firstContact
             }
             nearAtA = std::abs(hA) <= r;
         }
-        if (boxesApart(f, lower, upper))
+        if (boxesApart(f, swept))
         {
             continue;
         }
