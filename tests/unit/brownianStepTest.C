@@ -9,7 +9,7 @@
 // iterated reproduce the mean squared displacement of both closed forms.
 
 #include "BrownianStep.H"
-#include "InputError.H"
+#include "inputErrorAssertions.H"
 
 #include <gtest/gtest.h>
 
@@ -20,6 +20,7 @@
 #include <vector>
 
 using namespace brachDunn;
+using brachDunn::testCases::throwsInputError;
 
 namespace
 {
@@ -127,31 +128,6 @@ Moments compose(const Moments& s1, const Moments& s2)
     };
 }
 
-
-template<class Call>
-::testing::AssertionResult throwsInputError
-(
-    Call call,
-    const std::string& keyword,
-    const std::string& value
-)
-{
-    try
-    {
-        call();
-    }
-    catch (const InputError& error)
-    {
-        if (error.keyword() == keyword && error.value() == value)
-        {
-            return ::testing::AssertionSuccess();
-        }
-        return ::testing::AssertionFailure()
-            << "InputError names " << error.keyword() << " = "
-            << error.value() << ", not " << keyword << " = " << value;
-    }
-    return ::testing::AssertionFailure() << "no InputError";
-}
 
 } // End anonymous namespace
 

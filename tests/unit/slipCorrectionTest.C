@@ -6,7 +6,7 @@
 // their limits and the identity D = (kB T/m) tau that ties two of them.
 
 #include "SlipCorrection.H"
-#include "InputError.H"
+#include "inputErrorAssertions.H"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +15,7 @@
 #include <string>
 
 using namespace brachDunn;
+using brachDunn::testCases::throwsInputError;
 
 namespace
 {
@@ -74,32 +75,6 @@ long double referenceMeanFreePath
         << " by " << double(error) << " (relative) > " << double(tol);
 }
 
-
-//- The InputError a call throws, checked for its keyword and value
-template<class Call>
-::testing::AssertionResult throwsInputError
-(
-    Call call,
-    const std::string& keyword,
-    const std::string& value
-)
-{
-    try
-    {
-        call();
-    }
-    catch (const InputError& error)
-    {
-        if (error.keyword() == keyword && error.value() == value)
-        {
-            return ::testing::AssertionSuccess();
-        }
-        return ::testing::AssertionFailure()
-            << "InputError names " << error.keyword() << " = "
-            << error.value() << ", not " << keyword << " = " << value;
-    }
-    return ::testing::AssertionFailure() << "no InputError";
-}
 
 } // End anonymous namespace
 
