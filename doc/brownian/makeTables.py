@@ -63,6 +63,21 @@ if resp:
                     P("| %s | %s | %s |" % (pat, DNAME[d], " | ".join(row)))
         P("")
 
+def table_by_h(mc, pats, cell):
+    """One row per pattern and design, one column per h: cell(record, h)"""
+    P("| pattern | design | " + " | ".join("h=%s" % hfmt(h) for h in HS) + " |")
+    P("|---|---|" + "---|"*len(HS))
+    for pat in pats:
+        for d in range(7):
+            row = []
+            for h in HS:
+                r = [x for x in mc if x["pattern"] == pat and x["design"] == d and abs(x["h"] - h) < 1e-9*h]
+                row.append(cell(r[0], h) if r else "")
+            if any(row):
+                P("| %s | %s | %s |" % (pat, DNAME[d], " | ".join(row)))
+    P("")
+
+
 # --------------------------------------------------------------- mc -----
 for tag, title in (("mc", "analytical scheme"), ("mc_euler", "Euler scheme"), ("mc_m01", "analytical, maxCo 0.1")):
     mc = load("results_%s.jsonl" % tag)
@@ -70,34 +85,9 @@ for tag, title in (("mc", "analytical scheme"), ("mc_euler", "Euler scheme"), ("
         continue
     pats = [p for p in PNAME if any(x["pattern"] == p for x in mc)]
     P("## B. Monte Carlo D_eff/D ± 1 standard error (8 replicas), %s\n" % title)
-    P("| pattern | design | " + " | ".join("h=%s" % hfmt(h) for h in HS) + " |")
-    P("|---|---|" + "---|"*len(HS))
-    for pat in pats:
-        for d in range(7):
-            row = []
-            for h in HS:
-                r = [x for x in mc if x["pattern"] == pat and x["design"] == d and abs(x["h"] - h) < 1e-9*h]
-                row.append("%.4f ±%.4f" % (r[0]["D"], r[0]["Dse"]) if r else "")
-            if any(row):
-                P("| %s | %s | %s |" % (pat, DNAME[d], " | ".join(row)))
-    P("")
+    table_by_h(mc, pats, lambda r, h: "%.4f ±%.4f" % (r["D"], r["Dse"]))
     P("### B2. stationary one-step MSD, MSD(t = DT) / [2 D tau^2 (h - 1 + e^-h)]  (%s)\n" % title)
-    P("| pattern | design | " + " | ".join("h=%s" % hfmt(h) for h in HS) + " |")
-    P("|---|---|" + "---|"*len(HS))
-    for pat in pats:
-        for d in range(7):
-            row = []
-            for h in HS:
-                r = [x for x in mc if x["pattern"] == pat and x["design"] == d and abs(x["h"] - h) < 1e-9*h]
-                if r:
-                    m, se = r[0]["msd"][0]
-                    ex = ou_stat(h)
-                    row.append("%.4f" % (m/ex))
-                else:
-                    row.append("")
-            if any(row):
-                P("| %s | %s | %s |" % (pat, DNAME[d], " | ".join(row)))
-    P("")
+    table_by_h(mc, pats, lambda r, h: "%.4f" % (r["msd"][0][0]/ou_stat(h)))
     # short-time MSD curve at h = 0.1 and h = 1
     for h0 in (0.1, 1):
         P("### B3. stationary MSD(t)/OU at h = %g, t = lag*DT (%s)\n" % (h0, title))
@@ -116,29 +106,9 @@ for tag, title in (("mc", "analytical scheme"), ("mc_euler", "Euler scheme"), ("
                 P("| %s | %s | %s |" % (pat, DNAME[d], " | ".join(row)))
         P("")
     P("### B4. parcel velocity variance <U^2>/(kT/m) at step ends (design 4: the separate v_B) (%s)\n" % title)
-    P("| pattern | design | " + " | ".join("h=%s" % hfmt(h) for h in HS) + " |")
-    P("|---|---|" + "---|"*len(HS))
-    for pat in pats:
-        for d in range(7):
-            row = []
-            for h in HS:
-                r = [x for x in mc if x["pattern"] == pat and x["design"] == d and abs(x["h"] - h) < 1e-9*h]
-                row.append("%.4g" % r[0]["u2"] if r else "")
-            if any(row):
-                P("| %s | %s | %s |" % (pat, DNAME[d], " | ".join(row)))
-    P("")
+    table_by_h(mc, pats, lambda r, h: "%.4g" % r["u2"])
     P("### B5. kurtosis of the one-step displacement (Gaussian: 3) (%s)\n" % title)
-    P("| pattern | design | " + " | ".join("h=%s" % hfmt(h) for h in HS) + " |")
-    P("|---|---|" + "---|"*len(HS))
-    for pat in pats:
-        for d in range(7):
-            row = []
-            for h in HS:
-                r = [x for x in mc if x["pattern"] == pat and x["design"] == d and abs(x["h"] - h) < 1e-9*h]
-                row.append("%.3f" % r[0]["kurt1"] if r else "")
-            if any(row):
-                P("| %s | %s | %s |" % (pat, DNAME[d], " | ".join(row)))
-    P("")
+    table_by_h(mc, pats, lambda r, h: "%.3f" % r["kurt1"])
 
 # ------------------------------------------------------------- rest -----
 rest = load("results_rest.jsonl")
