@@ -3,6 +3,10 @@
 #include "basicKinematicCollidingCloud.H"
 #include "AdhesiveWallInteraction.H"
 #include "AdhesiveWallSurfaceContact.H"
+#include "SlipSphereDragForce.H"
+#include "ExactBrownianMotionForce.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicKinematicCollidingCloud);
 makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicKinematicCollidingCloud);
+makeParticleForceModelType(SlipSphereDragForce, basicKinematicCollidingCloud);
+makeParticleForceModelType(ExactBrownianMotionForce, basicKinematicCollidingCloud);

@@ -3,6 +3,10 @@
 #include "basicHeterogeneousReactingCloud.H"
 #include "AdhesiveWallInteraction.H"
 #include "AdhesiveWallSurfaceContact.H"
+#include "SlipSphereDragForce.H"
+#include "ExactBrownianMotionForce.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicHeterogeneousReactingCloud);
 makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicHeterogeneousReactingCloud);
+makeParticleForceModelType(SlipSphereDragForce, basicHeterogeneousReactingCloud);
+makeParticleForceModelType(ExactBrownianMotionForce, basicHeterogeneousReactingCloud);

@@ -3,6 +3,10 @@
 #include "basicKinematicCloud.H"
 #include "AdhesiveWallInteraction.H"
 #include "AdhesiveWallSurfaceContact.H"
+#include "SlipSphereDragForce.H"
+#include "ExactBrownianMotionForce.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicKinematicCloud);
 makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicKinematicCloud);
+makeParticleForceModelType(SlipSphereDragForce, basicKinematicCloud);
+makeParticleForceModelType(ExactBrownianMotionForce, basicKinematicCloud);

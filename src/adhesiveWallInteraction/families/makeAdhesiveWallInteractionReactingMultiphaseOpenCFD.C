@@ -3,6 +3,10 @@
 #include "basicReactingMultiphaseCloud.H"
 #include "AdhesiveWallInteraction.H"
 #include "AdhesiveWallSurfaceContact.H"
+#include "SlipSphereDragForce.H"
+#include "ExactBrownianMotionForce.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicReactingMultiphaseCloud);
 makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicReactingMultiphaseCloud);
+makeParticleForceModelType(SlipSphereDragForce, basicReactingMultiphaseCloud);
+makeParticleForceModelType(ExactBrownianMotionForce, basicReactingMultiphaseCloud);

@@ -3,6 +3,10 @@
 #include "basicReactingCloud.H"
 #include "AdhesiveWallInteraction.H"
 #include "AdhesiveWallSurfaceContact.H"
+#include "SlipSphereDragForce.H"
+#include "ExactBrownianMotionForce.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicReactingCloud);
 makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicReactingCloud);
+makeParticleForceModelType(SlipSphereDragForce, basicReactingCloud);
+makeParticleForceModelType(ExactBrownianMotionForce, basicReactingCloud);

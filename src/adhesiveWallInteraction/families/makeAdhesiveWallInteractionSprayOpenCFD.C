@@ -4,6 +4,10 @@
 #include "basicSprayCloud.H"
 #include "AdhesiveWallInteraction.H"
 #include "AdhesiveWallSurfaceContact.H"
+#include "SlipSphereDragForce.H"
+#include "ExactBrownianMotionForce.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicSprayCloud);
 makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicSprayCloud);
+makeParticleForceModelType(SlipSphereDragForce, basicSprayCloud);
+makeParticleForceModelType(ExactBrownianMotionForce, basicSprayCloud);

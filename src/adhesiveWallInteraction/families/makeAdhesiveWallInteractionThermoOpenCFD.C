@@ -3,6 +3,10 @@
 #include "basicThermoCloud.H"
 #include "AdhesiveWallInteraction.H"
 #include "AdhesiveWallSurfaceContact.H"
+#include "SlipSphereDragForce.H"
+#include "ExactBrownianMotionForce.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicThermoCloud);
 makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicThermoCloud);
+makeParticleForceModelType(SlipSphereDragForce, basicThermoCloud);
+makeParticleForceModelType(ExactBrownianMotionForce, basicThermoCloud);

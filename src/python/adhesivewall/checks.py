@@ -1381,6 +1381,66 @@ def usage():
     return "\n".join(lines)
 
 
+@command("brownianMsd", "CASE ORIGIN T MU P [COEFFICIENTS [CLOUD]]", 5, 7)
+def _brownian_msd(case, origin, T, mu, pressure, coefficients="Davies",
+                  cloud="kinematicCloud"):
+    """The mean squared displacement of the cloud's parcels (one
+    diameter and density, read from the latest time; kinematicCloud by
+    default) from ORIGIN, '(x y z)',
+    at the first and the last time folder equals the Ornstein-Uhlenbeck one
+    from a thermal start within three standard errors (aerosol.
+    msd_comparison); prints the table of every time folder (their
+    deviations are correlated: one fluctuation carries on to later
+    times)."""
+    from . import aerosol
+    latest = foam.latest_time(case)
+    folder = os.path.join(case, latest, "lagrangian", cloud)
+    d = set(lagrangian_values(os.path.join(folder, "d")))
+    rho = set(lagrangian_values(os.path.join(folder, "rho")))
+    if len(d) != 1 or len(rho) != 1:
+        raise CheckError(f"{folder}: parcels of more than one diameter or "
+                         "density")
+    xyz = [number(x, "ORIGIN") for x in origin.strip("()").split()]
+    rows = aerosol.msd_comparison(
+        case, xyz, d.pop(), rho.pop(), number(T, "T"), number(mu, "MU"),
+        number(pressure, "P"), coefficients, cloud)
+    if not rows:
+        raise CheckError(f"{case}: no time folder with parcels")
+    print("t,tOverTau,msd,msdSE,expected,deviationInSE")
+    for row in rows:
+        print(",".join(fmt(v) for v in row))
+    _report([f"t = {fmt(r[0])}: msd {fmt(r[2])} against {fmt(r[4])}, "
+             f"{r[5]:.2f} standard errors" for r in (rows[0], rows[-1])
+             if abs(r[5]) > 3])
+
+
+@command("settlingVelocity", "CASE RHO_C MU G LAMBDA [COEFFICIENTS] [RTOL]",
+         5, 7)
+def _settling_velocity(case, rho_c, mu, g, lam, coefficients="Davies",
+                       rtol="1e-3"):
+    """Every parcel of kinematicCloud at the latest time moves at the
+    settling velocity of its diameter and density (aerosol.
+    settling_velocity, gravity along -z of magnitude G) to RTOL."""
+    from . import aerosol
+    folder = os.path.join(case, foam.latest_time(case), "lagrangian",
+                          "kinematicCloud")
+    U = foam.list_file(os.path.join(folder, "U"))
+    d = lagrangian_values(os.path.join(folder, "d"))
+    rho = lagrangian_values(os.path.join(folder, "rho"))
+    if not U:
+        raise CheckError(f"{folder}: no parcels")
+    problems = []
+    for u, di, rhoi in zip(U, d, rho):
+        v = aerosol.settling_velocity(
+            di, rhoi, number(rho_c, "RHO_C"), number(mu, "MU"),
+            number(g, "G"), number(lam, "LAMBDA"), coefficients)
+        print(f"d {fmt(di)}: Uz {fmt(u[2])} against {fmt(-v)}")
+        if not abs(u[2] + v) <= number(rtol, "RTOL") * v:
+            problems.append(f"d = {fmt(di)}: Uz {fmt(u[2])} against "
+                            f"{fmt(-v)}")
+    _report(problems, f"{len(U)} parcels settle at the expected velocity")
+
+
 def main(argv):
     """adhesiveWallPost check SUBCOMMAND ARGUMENTS: runs a subcommand;
     returns 0, 1 (a check failed or a value could not be had) or 2 (wrong

@@ -178,6 +178,8 @@ def cunningham(d, mean_free_path, coefficients="Davies"):
     their lambda 0.0673 um at 296.15 K and 101.325 kPa).
     """
     A1, A2, A3 = CUNNINGHAM[coefficients]
+    if mean_free_path == 0:
+        return 1.0   # the continuum limit Kn -> 0
     Kn = 2 * mean_free_path / d
     return 1 + Kn * (A1 + A2 * math.exp(-A3 / Kn))
 

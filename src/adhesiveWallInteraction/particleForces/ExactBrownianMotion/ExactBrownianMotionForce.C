@@ -1,0 +1,219 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
+#include "ExactBrownianMotionForce.H"
+#include "BrownianStep.H"
+#include "CounterRandom.H"
+#include "SlipCorrection.H"
+#include "checkedInput.H"
+#include "gasState.H"
+#include "releaseCompat.H"
+
+#include <cmath>
+
+template<class CloudType>
+Foam::ExactBrownianMotionForce<CloudType>::ExactBrownianMotionForce
+(
+    CloudType& owner,
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+:
+    ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
+    T_
+    (
+        aerosolForces::readTemperature
+        (
+            this->coeffs(),
+            compat::hasCarrierTemperature
+            <
+                typename CloudType::parcelType::trackingData
+            >::value
+        )
+    ),
+    seed_(checkedInput::readCount(this->coeffs(), "seed", 0)),
+    drawTrackTime_(-1)
+{
+    checkedInput::requireKnownKeywords
+    (
+        this->coeffs(), {"T", "seed"}, "exactBrownianMotion"
+    );
+}
+
+
+template<class CloudType>
+void Foam::ExactBrownianMotionForce<CloudType>::drawStep
+(
+    const typename CloudType::parcelType& p,
+    const std::uint64_t draw,
+    const vector& V0,
+    const scalar tau,
+    const scalar thermalVariance,
+    vector& X,
+    vector& V
+) const
+{
+    brachDunn::CounterRandom random
+    (
+        seed_,
+        static_cast<std::uint64_t>(static_cast<std::int64_t>(p.origProc())),
+        static_cast<std::uint64_t>(static_cast<std::int64_t>(p.origId())),
+        draw
+    );
+
+    vector start = V0;
+    if (draw == 0)
+    {
+        // A thermal start: the parcel in equilibrium with the gas
+        const scalar sigma = std::sqrt(thermalVariance);
+        for (direction i = 0; i < vector::nComponents; ++i)
+        {
+            start[i] = sigma*random.normal();
+        }
+    }
+
+    const brachDunn::BrownianTransition transition =
+        brachDunn::brownianTransition(drawTrackTime_, tau, thermalVariance);
+    for (direction i = 0; i < vector::nComponents; ++i)
+    {
+        const scalar z1 = random.normal();
+        const scalar z2 = random.normal();
+        const brachDunn::BrownianSample s =
+            brachDunn::sampleBrownian(transition, start[i], z1, z2);
+        X[i] = s.displacement;
+        V[i] = s.velocity;
+    }
+}
+
+
+template<class CloudType>
+void Foam::ExactBrownianMotionForce<CloudType>::checkCloud
+(
+    const scalar trackTime
+) const
+{
+    if (drawTrackTime_ < 0)
+    {
+        const word dispersion = this->owner().dispersion().type();
+        if (dispersion != "none")
+        {
+            FatalErrorInFunction
+                << "exactBrownianMotion: dispersionModel " << dispersion
+                << ": must be none (exactBrownianMotion keeps a parcel's "
+                << "Brownian state where the dispersion models keep theirs)"
+                << nl << exit(FatalError);
+        }
+        const auto& forces = this->owner().forces();
+        forAll(forces, i)
+        {
+            if (forces[i].type() == "BrownianMotion")
+            {
+                FatalErrorInFunction
+                    << "exactBrownianMotion: particleForces also selects "
+                    << "BrownianMotion: Brownian motion would be counted "
+                    << "twice (select one)" << nl << exit(FatalError);
+            }
+        }
+        drawTrackTime_ = trackTime;
+    }
+    else if (mag(trackTime - drawTrackTime_) > 1e-12*drawTrackTime_)
+    {
+        FatalErrorInFunction
+            << "exactBrownianMotion: the cloud's time step changed from "
+            << drawTrackTime_ << " s to " << trackTime << " s: the Brownian "
+            << "step is drawn for a fixed time step (set adjustTimeStep no "
+            << "and keep deltaT)" << nl << exit(FatalError);
+    }
+}
+
+
+template<class CloudType>
+Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar dt,
+    const scalar mass,
+    const scalar Re,
+    const scalar muc
+) const
+{
+    forceSuSp value(Zero);
+    if (!compat::isActive(p))
+    {
+        return value;
+    }
+
+    // The friction of the drag actually selected
+    const auto& forces = this->owner().forces();
+    const scalar Sp = forces.calcCoupled(p, td, dt, mass, Re, muc).Sp();
+    if (!(Sp > 0))
+    {
+        FatalErrorInFunction
+            << "exactBrownianMotion needs a drag (slipSphereDrag, or another "
+            << "implicit coupled force) in particleForces: the friction of "
+            << "parcel " << p.origId() << " is " << Sp << nl
+            << exit(FatalError);
+    }
+    const scalar massEff = forces.massEff(p, td, mass);
+
+    scalar T = T_;
+    if constexpr
+    (
+        compat::hasCarrierTemperature
+        <
+            typename CloudType::parcelType::trackingData
+        >::value
+    )
+    {
+        T = compat::carrierTemperature(td);
+    }
+    const scalar tau = massEff/Sp;
+    const scalar thermalVariance = brachDunn::boltzmann*T/massEff;
+    const scalar trackTime = this->owner().solution().trackTime();
+    if (drawTrackTime_ < 0)
+    {
+        checkCloud(trackTime);
+    }
+
+    scalar& draws = compat::brownianDraws(p);
+    vector& V0 = compat::brownianVelocity(p);
+    if (!(draws >= 0) || draws != std::floor(draws))
+    {
+        FatalErrorInFunction
+            << "exactBrownianMotion: parcel " << p.origId() << " of "
+            << "processor " << p.origProc() << " carries tTurb = " << draws
+            << ", not a count of Brownian draws (was the case run with a "
+            << "dispersion model?)" << nl << exit(FatalError);
+    }
+    const std::uint64_t count = static_cast<std::uint64_t>(draws);
+
+    // The Brownian velocity held over this step: the current draw's
+    // displacement over the step (none before the first draw)
+    vector W(Zero);
+    vector V(Zero);
+    if (count > 0)
+    {
+        vector X;
+        drawStep(p, count - 1, V0, tau, thermalVariance, X, V);
+        W = X/drawTrackTime_;
+    }
+    value.Su() = Sp*W;
+
+    // The sub-step that completes the time step draws the next step and
+    // sets the held velocity to it (the impulse is exact for the cloud's
+    // integration scheme: U -> U + (alpha - beta U) dtEff); a sub-step of
+    // the rounding left after it (dt of order 1e-16 of the step) does not
+    const bool completesStep =
+        p.stepFraction() >= 1 - 1e-9 && dt > 1e-9*trackTime;
+    if (completesStep)
+    {
+        checkCloud(trackTime);
+        vector Xnext;
+        vector Vnext;
+        drawStep(p, count, V, tau, thermalVariance, Xnext, Vnext);
+        const scalar dtEff = this->owner().UIntegrator().dtEff(dt, Sp/massEff);
+        value.Su() += massEff*(Xnext/drawTrackTime_ - W)/dtEff;
+        V0 = V;
+        draws = count + 1;
+    }
+    return value;
+}

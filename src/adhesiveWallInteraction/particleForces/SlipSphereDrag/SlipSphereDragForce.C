@@ -1,0 +1,97 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
+#include "SlipSphereDragForce.H"
+#include "checkedInput.H"
+#include "releaseCompat.H"
+
+template<class CloudType>
+Foam::scalar Foam::SlipSphereDragForce<CloudType>::CdRe(const scalar Re)
+{
+    return Re > 1000 ? 0.424*Re : 24*(1 + cbrt(sqr(Re))/6);
+}
+
+
+template<class CloudType>
+Foam::SlipSphereDragForce<CloudType>::SlipSphereDragForce
+(
+    CloudType& owner,
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+:
+    ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
+    coefficients_(aerosolForces::readSlipCoefficients(this->coeffs())),
+    meanFreePath_(aerosolForces::readMeanFreePath(this->coeffs())),
+    T_(-1)
+{
+    const dictionary& coeffs = this->coeffs();
+    checkedInput::requireKnownKeywords
+    (
+        coeffs,
+        {"slipCoefficients", "meanFreePath", "p", "T", "molarMass"},
+        "slipSphereDrag"
+    );
+    if (meanFreePath_.given < 0)
+    {
+        T_ = aerosolForces::readTemperature
+        (
+            coeffs,
+            compat::hasCarrierTemperature
+            <
+                typename CloudType::parcelType::trackingData
+            >::value
+        );
+    }
+    else if (checkedInput::find(coeffs, "T"))
+    {
+        checkedInput::fail
+        (
+            coeffs, "T", checkedInput::entryText(*checkedInput::find(coeffs, "T")),
+            "is not read with meanFreePath (T goes with p)"
+        );
+    }
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::SlipSphereDragForce<CloudType>::slipCorrection
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar muc
+) const
+{
+    scalar T = T_;
+    if constexpr
+    (
+        compat::hasCarrierTemperature
+        <
+            typename CloudType::parcelType::trackingData
+        >::value
+    )
+    {
+        if (meanFreePath_.given < 0)
+        {
+            T = compat::carrierTemperature(td);
+        }
+    }
+    return brachDunn::cunningham(p.d(), meanFreePath_.at(T, muc), coefficients_);
+}
+
+
+template<class CloudType>
+Foam::forceSuSp Foam::SlipSphereDragForce<CloudType>::calcCoupled
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar dt,
+    const scalar mass,
+    const scalar Re,
+    const scalar muc
+) const
+{
+    forceSuSp value(Zero);
+    value.Sp() =
+        mass*0.75*muc*CdRe(Re)/(p.rho()*sqr(p.d()))
+       /slipCorrection(p, td, muc);
+    return value;
+}

@@ -1,0 +1,116 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
+#include "gasState.H"
+#include "checkedInput.H"
+
+namespace
+{
+
+Foam::scalar readPositive
+(
+    const Foam::dictionary& dict,
+    const Foam::word& keyword
+)
+{
+    const Foam::scalar value = Foam::checkedInput::readNumber(dict, keyword);
+    if (!(value > 0))
+    {
+        Foam::checkedInput::fail
+        (
+            dict, keyword, Foam::checkedInput::entryText(*Foam::checkedInput::find(dict, keyword)),
+            "must be > 0"
+        );
+    }
+    return value;
+}
+
+} // End anonymous namespace
+
+
+Foam::scalar Foam::aerosolForces::readTemperature
+(
+    const dictionary& dict,
+    const bool carrierHasTemperature
+)
+{
+    const bool given = checkedInput::find(dict, "T") != nullptr;
+    if (carrierHasTemperature)
+    {
+        if (given)
+        {
+            checkedInput::fail
+            (
+                dict, "T", checkedInput::entryText(*checkedInput::find(dict, "T")),
+                "is not read in a thermo cloud: the carrier's temperature "
+                "at the parcel is used (remove T)"
+            );
+        }
+        return -1;
+    }
+    if (!given)
+    {
+        checkedInput::fail
+        (
+            dict, "T", "(missing)",
+            "the gas temperature [K] is required: this cloud has no "
+            "carrier temperature"
+        );
+    }
+    return readPositive(dict, "T");
+}
+
+
+Foam::scalar Foam::aerosolForces::meanFreePathSource::at
+(
+    const scalar T,
+    const scalar mu
+) const
+{
+    return given >= 0 ? given : brachDunn::meanFreePath(mu, p, T, molarMass);
+}
+
+
+Foam::aerosolForces::meanFreePathSource
+Foam::aerosolForces::readMeanFreePath(const dictionary& dict)
+{
+    meanFreePathSource source;
+    const bool given = checkedInput::find(dict, "meanFreePath") != nullptr;
+    const bool fromP = checkedInput::find(dict, "p") != nullptr;
+    if (given == fromP)
+    {
+        checkedInput::fail
+        (
+            dict, given ? "meanFreePath" : "meanFreePath or p",
+            given ? "given with p" : "(missing)",
+            "give either meanFreePath [m] or the pressure p [Pa] (with T "
+            "and molarMass, from which the mean free path follows)"
+        );
+    }
+    if (given)
+    {
+        source.given = readPositive(dict, "meanFreePath");
+    }
+    else
+    {
+        source.p = readPositive(dict, "p");
+        if (checkedInput::find(dict, "molarMass"))
+        {
+            source.molarMass = readPositive(dict, "molarMass");
+        }
+    }
+    return source;
+}
+
+
+::brachDunn::SlipCoefficients
+Foam::aerosolForces::readSlipCoefficients(const dictionary& dict)
+{
+    if (!checkedInput::find(dict, "slipCoefficients"))
+    {
+        return brachDunn::daviesSlip;
+    }
+    const word name = checkedInput::readWord(dict, "slipCoefficients");
+    return checkedInput::coreCall
+    (
+        dict, [&]{ return brachDunn::slipCoefficients(name); }
+    );
+}
