@@ -22,11 +22,7 @@ Foam::ExactBrownianMotionForce<CloudType>::ExactBrownianMotionForce
     (
         aerosolForces::readTemperature
         (
-            this->coeffs(),
-            compat::hasCarrierTemperature
-            <
-                typename CloudType::parcelType::trackingData
-            >::value
+            this->coeffs(), aerosolForces::carrierHasTemperature<CloudType>
         )
     ),
     seed_(checkedInput::readCount(this->coeffs(), "seed", 0)),
@@ -155,19 +151,9 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
     }
     const scalar massEff = forces.massEff(p, td, mass);
 
-    scalar T = T_;
-    if constexpr
-    (
-        compat::hasCarrierTemperature
-        <
-            typename CloudType::parcelType::trackingData
-        >::value
-    )
-    {
-        T = compat::carrierTemperature(td);
-    }
     const scalar tau = massEff/Sp;
-    const scalar thermalVariance = brachDunn::boltzmann*T/massEff;
+    const scalar thermalVariance =
+        brachDunn::boltzmann*aerosolForces::temperatureAt(T_, td)/massEff;
     const scalar trackTime = this->owner().solution().trackTime();
     if (drawTrackTime_ < 0)
     {

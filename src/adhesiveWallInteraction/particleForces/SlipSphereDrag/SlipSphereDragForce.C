@@ -1,7 +1,6 @@
 // adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 #include "SlipSphereDragForce.H"
 #include "checkedInput.H"
-#include "releaseCompat.H"
 
 template<class CloudType>
 Foam::scalar Foam::SlipSphereDragForce<CloudType>::CdRe(const scalar Re)
@@ -34,11 +33,7 @@ Foam::SlipSphereDragForce<CloudType>::SlipSphereDragForce
     {
         T_ = aerosolForces::readTemperature
         (
-            coeffs,
-            compat::hasCarrierTemperature
-            <
-                typename CloudType::parcelType::trackingData
-            >::value
+            coeffs, aerosolForces::carrierHasTemperature<CloudType>
         );
     }
     else if (checkedInput::find(coeffs, "T"))
@@ -60,21 +55,12 @@ Foam::scalar Foam::SlipSphereDragForce<CloudType>::slipCorrection
     const scalar muc
 ) const
 {
-    scalar T = T_;
-    if constexpr
+    return brachDunn::cunningham
     (
-        compat::hasCarrierTemperature
-        <
-            typename CloudType::parcelType::trackingData
-        >::value
-    )
-    {
-        if (meanFreePath_.given < 0)
-        {
-            T = compat::carrierTemperature(td);
-        }
-    }
-    return brachDunn::cunningham(p.d(), meanFreePath_.at(T, muc), coefficients_);
+        p.d(),
+        meanFreePath_.at(aerosolForces::temperatureAt(T_, td), muc),
+        coefficients_
+    );
 }
 
 
