@@ -1414,6 +1414,36 @@ def _brownian_msd(case, origin, T, mu, pressure, coefficients="Davies",
              if abs(r[5]) > 3])
 
 
+@command("sameParcelPositions", "CASE REFERENCE TOLERANCE [CLOUD]", 3, 4)
+def _same_parcel_positions(case, reference, tolerance, cloud="kinematicCloud"):
+    """The parcels of the cloud at the latest time of CASE (reconstructed,
+    in any order) are those of REFERENCE, matched by origin (origProcId,
+    origId), each at the same position to TOLERANCE [m]."""
+    from . import aerosol
+
+    def by_origin(folder):
+        time = foam.latest_time(folder)
+        path = os.path.join(folder, time, "lagrangian", cloud)
+        keys = zip(lagrangian_values(os.path.join(path, "origProcId")),
+                   lagrangian_values(os.path.join(path, "origId")))
+        return time, dict(zip(keys, aerosol.positions(folder, time, cloud)))
+
+    time, parcels = by_origin(case)
+    reference_time, expected = by_origin(reference)
+    if time != reference_time or set(parcels) != set(expected) \
+            or not parcels:
+        raise CheckError(f"{case} ({len(parcels)} parcels at {time}) and "
+                         f"{reference} ({len(expected)} at {reference_time})"
+                         " do not hold the same parcels")
+    limit = number(tolerance, "TOLERANCE")
+    worst = max(max(abs(a - b) for a, b in zip(p, expected[key]))
+                for key, p in parcels.items())
+    _report([f"a parcel {fmt(worst)} m from its position in {reference}"]
+            if worst > limit else [],
+            f"{len(parcels)} parcels at their positions in {reference} "
+            f"(largest difference {fmt(worst)} m)")
+
+
 @command("settlingVelocity", "CASE RHO_C MU G LAMBDA [COEFFICIENTS] [RTOL]",
          5, 7)
 def _settling_velocity(case, rho_c, mu, g, lam, coefficients="Davies",
