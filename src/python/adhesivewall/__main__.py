@@ -5,6 +5,7 @@ Commands:
   bendDeposition [CASE]      post-processing of the tutorials (their
   fibreFilter [CASE]         Allrun.post): results.csv, log.table, plots
   microsphereImpact [CASE]
+  tubeDiffusion [CASE]
 
   compare CASE REFERENCE     the files under the folder REFERENCE against
                              those of CASE: tables by column name, numbers
@@ -24,6 +25,8 @@ Commands:
                              parcels, flow-weighted over the inlet)
   microsphereParcels N       the rows of microsphereImpact's parcel tables
                              (N speeds per diameter of figure5.csv)
+  tubePositions [CASE]       tubeDiffusion's positions files (flux-weighted
+                             over the inlet, one per injector)
 """
 
 import sys
@@ -65,6 +68,10 @@ def main(argv=None):
         print("\n".join(bend_deposition.flow_weighted_positions(
             int(arguments[0]), 2.5e-3, "-0.0145")))
         return 0
+    if command == "tubePositions" and len(arguments) <= 1:
+        from .tutorials import tube_diffusion
+        tube_diffusion.write_positions(*arguments)
+        return 0
     if command == "microsphereParcels" and len(arguments) == 1:
         from .tutorials import microsphere_impact
         from . import tables
@@ -80,6 +87,7 @@ TUTORIALS = {
     "bendDeposition": "bend_deposition",
     "fibreFilter": "fibre_filter",
     "microsphereImpact": "microsphere_impact",
+    "tubeDiffusion": "tube_diffusion",
 }
 
 if __name__ == "__main__":
