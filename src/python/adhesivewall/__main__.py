@@ -27,6 +27,8 @@ Commands:
                              (N speeds per diameter of figure5.csv)
   tubePositions [CASE]       tubeDiffusion's positions files (flux-weighted
                              over the inlet, one per injector)
+  fibreSpectrum CASE VARIANT fibreFilter's spectrum sub-case: its injectors
+                             and positions (VARIANT full or reduced)
 """
 
 import sys
@@ -67,6 +69,10 @@ def main(argv=None):
         from .tutorials import bend_deposition
         print("\n".join(bend_deposition.flow_weighted_positions(
             int(arguments[0]), 2.5e-3, "-0.0145")))
+        return 0
+    if command == "fibreSpectrum" and len(arguments) == 2:
+        from .tutorials import fibre_filter
+        fibre_filter.write_spectrum(*arguments)
         return 0
     if command == "tubePositions" and len(arguments) <= 1:
         from .tutorials import tube_diffusion

@@ -2,37 +2,49 @@
 """fibreFilter: the single-fibre efficiency of a filter fibre.
 
 From the model's statistics of each particle sub-case U<U0>/particles and
-cloud (stick, adhesive), per injector (one per diameter, on the fibre's own
-mesh, contact at the particle's surface):
+cloud (stick, adhesive), per injector, on the fibre's own mesh with contact
+at the particle's surface, slip and Brownian motion:
 
     results.csv      eta +- its standard error per face velocity, diameter
-                     and wall model, with the Kuwabara-flow correlations
-                     eta_R, eta_I
+                     and wall model, with the Kuwabara-flow correlations of
+                     each mechanism and their sum
+    mpps.csv         the most penetrating size found at each face velocity
+                     that runs the spectrum (0.02-10 um), its efficiency,
+                     and Lee & Liu's (1980) closed form
     correlation.csv  the correlations' curves per face velocity
     angles.csv       where on the fibre the captures are
     log.table        the headline table (also printed)
-    efficiency.png, angles.png
+    efficiency.png, spectrum.png, angles.png
 
-eta = (captured/parcels)(2 band/d_f): the fraction of the flow through the
-fibre's projected width d_f that the fibre captures, the parcels evenly
-spaced over |y| < band (particles/constant/positions); its standard error
-is the binomial one of captured/parcels, scaled alike. Stokes number on
-the fibre diameter (Hinds), Stk = rho_p d^2 U0/(18 mu d_f), with Cc = 1
-(OpenFOAM's sphereDrag has no slip correction); R = d/d_f.
+eta = sum over the diameter's injectors of captured x gap/d_f: the parcels
+of an injector are evenly spaced in y, `gap` apart, each standing for the
+flow through its gap; the fraction of the flow through the fibre's
+projected width d_f that the fibre captures. Its standard error is the
+binomial one of each injector's captured/parcels, scaled alike. Stokes
+number on the fibre diameter (Hinds), Stk = rho_p Cc d^2 U0/(18 mu d_f);
+R = d/d_f; Peclet number Pe = d_f U0/D, D = k T Cc/(3 pi mu d).
+
+    adhesiveWallPost fibreSpectrum SUBCASE VARIANT
+        (Allrun) SUBCASE/constant/injectors and positions files of the
+        spectrum (SUBCASE/constant/spectrum, VARIANT full or reduced)
+    adhesiveWallPost fibreFilter [CASE]
+        (Allrun.post) the post-processing
 """
 
 import glob
 import math
 import os
 
-from .. import correlations, foam, statistics, tables
+from .. import correlations, curves, foam, statistics, tables
 
 CLOUDS = ("stick", "adhesive")
 ANGLE_CASES = (("0.1", "2e-6"), ("2", "2e-6"), ("2", "5e-6"), ("2", "10e-6"))
+OUTER = 100     # the injectorID of a band's outer half: its inner one's + 100
 
 
 class Filter:
-    """The fibre, the gas and the particles of the case."""
+    """The fibre, the gas and the particles of the case (the tutorial, or a
+    flow sub-case U<U0> of it)."""
 
     def __init__(self, case="."):
         def value(path, entry):
@@ -40,27 +52,168 @@ class Filter:
                                     expand=False))
         self.dFibre = value("constant/parameters", "dFibre")
         self.alpha = value("constant/parameters", "alpha")
+        self.U0 = value("constant/parameters", "U0")
+        self.T = value("constant/parameters", "T")
+        self.meanFreePath = value("constant/parameters", "lambda")
         self.nu = value("constant/transportProperties", "nu")
         self.mu = self.nu * value("constant/transportProperties", "rhoInf")
         self.rhoP = value("particles/constant/cloudProperties",
                           "constantProperties/rho0")
-        # The parcels at y_i = band (2 (i + 1/2)/n - 1), i < n
-        y = [abs(p[1]) for p in foam.list_file(
-            os.path.join(case, "particles/constant/positions"))]
-        self.parcels = len(y)
-        self.band = max(y) * self.parcels / (self.parcels - 1)
-        # The injectors, one per diameter: (injectorID, d as named, d)
-        injectors = foam.dictionary(
-            os.path.join(case, "particles/constant/injectors"), expand=False)
-        self.injectors = sorted(
-            ((entry["injectorID"], name[1:],
-              entry["sizeDistribution"]["fixedValueDistribution"]["value"])
-             for name, entry in injectors.items() if name != "FoamFile"),
-            key=lambda injector: injector[2])
+        # the fibres' spacing: the period of the row
+        self.h = self.dFibre * math.sqrt(math.pi / (4 * self.alpha))
+        # where the parcels start: the x of the 1-10 um set's positions
+        self.x0 = foam.list_file(os.path.join(
+            case, "particles/constant/positions"))[0][0]
+
+    def slip(self, d):
+        """Cunningham's correction (Davies 1945), as slipSphereDrag."""
+        return correlations.cunningham(d, self.meanFreePath, "Davies")
+
+    def diffusivity(self, d):
+        return correlations.stokes_einstein(d, self.T, self.mu, self.slip(d))
 
     def stokes(self, d, U):
-        return self.rhoP * d * d * U / (18 * self.mu * self.dFibre)
+        return self.rhoP * self.slip(d) * d * d * U \
+            / (18 * self.mu * self.dFibre)
 
+    def peclet(self, d, U):
+        return self.dFibre * U / self.diffusivity(d)
+
+    def correlations(self, d, U):
+        """Each mechanism's single-fibre efficiency in Kuwabara's flow and
+        their sum eta_D (Stechkina & Fuchs) + eta_R + eta_DR + eta_I (None
+        where the impaction fit does not hold, R >= 0.4)."""
+        a, R, Pe = self.alpha, d / self.dFibre, self.peclet(d, U)
+        c = dict(etaD=correlations.diffusion_stechkina_fuchs(a, Pe),
+                 etaDLL=correlations.diffusion_lee_liu(a, Pe),
+                 etaR=correlations.interception(a, R),
+                 etaDR=correlations.diffusion_interception(a, R, Pe),
+                 etaI=correlations.impaction(a, R, self.stokes(d, U)))
+        c["etaSum"] = None if c["etaI"] is None else \
+            c["etaD"] + c["etaR"] + c["etaDR"] + c["etaI"]
+        return c
+
+    def lee_liu_mpps(self, U):
+        return correlations.lee_liu_mpps(self.alpha, self.dFibre, U,
+                                         self.meanFreePath, self.T, self.mu)
+
+
+# --- The spectrum: injectors and positions ------------------------------------
+
+def spectrum_plan(fibre, U, diameters, captures):
+    """Per diameter (d, band B, parcels, eta_c, sigma): the band |y| < B
+    that holds every parcel the fibre can capture, and the parcels that
+    give about `captures` captures in it, by the correlations (eta_c, their
+    sum; the geometric limit 1 + R where impaction's fit does not hold):
+    B = min(h/2, min(4 y_c, (d_f + d)/2 + 1 um) + 5 sigma), y_c = eta_c
+    d_f/2 the half-width of the captured flow, (d_f + d)/2 + 1 um beyond
+    which no particle on a straight path can touch the fibre, sigma =
+    sqrt(2 D 1.5 x_0/U) the spread of the start positions that Brownian
+    motion mixes on the way to the fibre (x_0 the distance of the start
+    from the fibre's axis; 1.5 for the slowing at the fibre); the whole
+    period h/2 where that reaches it. Parcels max(1000, captures 2 B/(eta_c
+    d_f)), rounded up to a multiple of 4."""
+    plan = []
+    for d in diameters:
+        c = fibre.correlations(d, U)
+        R = d / fibre.dFibre
+        eta = 1 + R if c["etaSum"] is None else min(c["etaSum"], 1 + R)
+        sigma = math.sqrt(2 * fibre.diffusivity(d) * 1.5 * abs(fibre.x0) / U)
+        band = min(fibre.h / 2,
+                   min(2 * eta * fibre.dFibre,
+                       (fibre.dFibre + d) / 2 + 1e-6) + 5 * sigma)
+        parcels = max(1000, 4 * math.ceil(
+            captures * 2 * band / (eta * fibre.dFibre) / 4))
+        plan.append((d, band, parcels, eta, sigma))
+    return plan
+
+
+def band_positions(band, parcels):
+    """(inner, outer): parcels evenly spaced over |y| < band, 2 band/parcels
+    apart, split into the inner half of the band (|y| < band/2, half the
+    parcels) and the outer half (band/2 < |y| < band, a quarter on each
+    side)."""
+    if parcels % 4:
+        raise ValueError(f"band_positions: {parcels} parcels, not a multiple "
+                         "of 4")
+    gap = 2 * band / parcels
+    inner = [-band / 2 + (k + 0.5) * gap for k in range(parcels // 2)]
+    side = [band / 2 + (k + 0.5) * gap for k in range(parcels // 4)]
+    return inner, sorted([-y for y in side] + side)
+
+
+HEADER = """\
+/*--------------------------------*- C++ -*----------------------------------*\\
+  adhesiveWallInteraction tutorial: fibreFilter
+  SPDX-License-Identifier: GPL-3.0-or-later
+\\*---------------------------------------------------------------------------*/
+FoamFile
+{{
+    version     2.0;
+    format      ascii;
+    class       {foamClass};
+    location    "constant";
+    object      {name};
+}}
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+// Written by fibre_filter.py spectrum (Allrun) from constant/spectrum
+"""
+
+
+def injector_name(d):
+    return "d%gnm" % round(d * 1e9, 6)
+
+
+def write_spectrum(folder, variant):
+    """The particle sub-case `folder` (U<U0>/particles) runs the spectrum:
+    its constant/injectors (two per diameter of constant/spectrum's
+    `variant`: the inner half of the band, injectorID k, the outer half,
+    100 + k) and their positions files, as spectrum_plan gives them."""
+    fibre = Filter(os.path.join(folder, ".."))
+    path = os.path.join(folder, "constant", "spectrum")
+    diameters = [float(d) for d in foam.dictionary(path, variant,
+                                                   expand=False)]
+    captures = float(foam.value(path, "captures/" + variant, expand=False))
+    plan = spectrum_plan(fibre, fibre.U0, diameters, captures)
+    lines = [HEADER.format(foamClass="dictionary", name="injectors"),
+             "// Per diameter the inner half of its band (injectorID k) and "
+             "the outer half",
+             "// (injectorID %d + k), constant/positions.<name>; what they "
+             "share is `parcels`" % OUTER,
+             "// (constant/cloudProperties). d [m], band B [m], parcels, "
+             "eta_c, sigma [m]:"]
+    lines += ["//   %-8s %.4g %.4g %6d %.3g %.3g" % (injector_name(d), d, band,
+                                                   n, eta, sigma)
+              for d, band, n, eta, sigma in plan]
+    lines.append("")
+    for k, (d, band, n, eta, sigma) in enumerate(plan, 1):
+        name = injector_name(d)
+        inner, outer = band_positions(band, n)
+        for suffix, ident, ys in (("", k, inner), ("Outer", OUTER + k, outer)):
+            positions = "positions.%s%s" % (name, suffix)
+            lines.append(
+                '%s%s { $parcels; injectorID %d; positionsFile "%s"; '
+                'sizeDistribution { type fixedValue; fixedValueDistribution '
+                '{ value %.6g; } } }' % (name, suffix, ident, positions, d))
+            with open(os.path.join(folder, "constant", positions), "w") as f:
+                f.write(HEADER.format(foamClass="vectorField", name=positions))
+                f.write("// %s: %d parcels %.6g m apart, band %.6g m\n\n" % (
+                    name + suffix, len(ys), 2 * band / n, band))
+                f.write("%d\n(\n" % len(ys))
+                f.write("".join("(%.9g %.12g 5e-06)\n" % (fibre.x0, y)
+                                for y in ys))
+                f.write(")\n")
+    with open(os.path.join(folder, "constant", "injectors"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("%s: the spectrum at %g m/s, %d diameters, %d parcels per cloud"
+          % (folder, fibre.U0, len(plan), sum(p[2] for p in plan)))
+    for d, band, n, eta, sigma in plan:
+        print("  d %-7.3g um  band %-6.3g um  parcels %-6d  eta_c %-8.3g "
+              "sigma %.3g um" % (d * 1e6, band * 1e6, n, eta, sigma * 1e6))
+
+
+# --- Results -------------------------------------------------------------------
 
 def sub_cases(case="."):
     """The particle sub-cases U<U0>/particles, as (folder, U0 text), by
@@ -72,55 +225,122 @@ def sub_cases(case="."):
     return sorted(found, key=lambda s: float(s[1]))
 
 
-RESULT_COLUMNS = ["U0", "d", "Stk", "R", "Re_f", "model", "parcels",
-                  "captured", "escaped", "airborne", "eta", "etaSE", "etaR",
-                  "etaI"]
+def injectors(folder):
+    """The injectors of a particle sub-case, as (injectorID, d, parcels,
+    gap, band): its positions evenly spaced `gap` apart (one parcel per
+    gap of flow), the outermost within `band` of the axis."""
+    models = foam.dictionary("constant/stickProperties",
+                             "subModels/injectionModels", case=folder)
+    found = []
+    for name, entry in models.items():
+        d = float(entry["sizeDistribution"]["fixedValueDistribution"]["value"])
+        ys = sorted(p[1] for p in foam.list_file(os.path.join(
+            folder, "constant", str(entry["positionsFile"]))))
+        gaps = [b - a for a, b in zip(ys, ys[1:])]
+        gap = min(gaps)
+        if max(gaps) > gap * (1 + 1e-6) and max(gaps) < gap * 1.5:
+            raise ValueError(f"{folder}: {name}: the positions are not evenly "
+                             "spaced")
+        found.append((int(entry["injectorID"]), d, len(ys), gap,
+                      max(abs(ys[0]), abs(ys[-1])) + gap / 2))
+    return sorted(found)
+
+
+def d_text(d):
+    """The diameter as the results name it: micrometres e-6."""
+    return "%ge-6" % round(d * 1e6, 9)
+
+
+RESULT_COLUMNS = ["U0", "d", "Cc", "Stk", "R", "Pe", "Re_f", "model",
+                  "parcels", "band", "captured", "outer", "escaped",
+                  "airborne", "eta", "etaSE", "etaD", "etaDLL", "etaR",
+                  "etaDR", "etaI", "etaSum"]
+
+
+def _number(value, form="%.6g"):
+    return "" if value is None else form % value
 
 
 def result_rows(fibre, subs):
     rows = []
     for folder, U in subs:
+        U0 = float(U)
+        of_folder = injectors(folder)
+        diameters = sorted(set(i[1] for i in of_folder))
         for cloud in CLOUDS:
             last = statistics.read_statistics(folder, cloud).last_time()
-            for injector, d_text, _ in fibre.injectors:
-                of = last.where(injector=injector)
-                if not len(of):
-                    raise ValueError(f"no statistics of injector {injector}"
-                                     f" in {folder}, cloud {cloud}")
-                captured = of.sum("captureParcels")
-                escaped = of.sum("escapeParcels")
-                U0, d = float(U), float(d_text)
-                n = fibre.parcels
-                R = d / fibre.dFibre
-                stk = fibre.stokes(d, U0)
-                p = captured / n
-                scale = 2 * fibre.band / fibre.dFibre
-                eta_I = correlations.impaction(fibre.alpha, R, stk)
+            for d in diameters:
+                parcels = captured = escaped = 0
+                outer = None
+                eta = variance = band = 0.0
+                for ident, dj, n, gap, reach in of_folder:
+                    if dj != d:
+                        continue
+                    of = last.where(injector=ident)
+                    if not len(of):
+                        raise ValueError(f"no statistics of injector {ident}"
+                                         f" in {folder}, cloud {cloud}")
+                    c = of.sum("captureParcels")
+                    parcels += n
+                    captured += c
+                    escaped += of.sum("escapeParcels")
+                    if ident > OUTER:
+                        outer = (outer or 0) + c
+                    eta += c * gap / fibre.dFibre
+                    variance += (gap / fibre.dFibre) ** 2 * n \
+                        * curves.binomial_se(c, n) ** 2 * n
+                    band = max(band, reach)
+                c = fibre.correlations(d, U0)
                 rows.append([
-                    U, d_text, "%.4g" % stk, "%.4g" % R,
-                    "%.3g" % (U0 * fibre.dFibre / fibre.nu), cloud, "%d" % n,
-                    "%d" % captured, "%d" % escaped,
-                    "%d" % (n - captured - escaped), "%.4g" % (p * scale),
-                    "%.3g" % (scale * math.sqrt(p * (1 - p) / n)),
-                    "%.6g" % correlations.interception(fibre.alpha, R),
-                    "" if eta_I is None else "%.6g" % eta_I])
+                    U, d_text(d), "%.5g" % fibre.slip(d),
+                    "%.4g" % fibre.stokes(d, U0), "%.4g" % (d / fibre.dFibre),
+                    "%.4g" % fibre.peclet(d, U0),
+                    "%.3g" % (U0 * fibre.dFibre / fibre.nu), cloud,
+                    "%d" % parcels, "%.5g" % band, "%d" % captured,
+                    "" if outer is None else "%d" % outer, "%d" % escaped,
+                    "%d" % (parcels - captured - escaped), "%.4g" % eta,
+                    "%.3g" % math.sqrt(variance)] + [
+                    _number(c[k]) for k in ("etaD", "etaDLL", "etaR", "etaDR",
+                                            "etaI", "etaSum")])
+    return rows
+
+
+MPPS_COLUMNS = ["U0", "d", "eta", "etaSE", "model", "dLeeLiu", "etaLeeLiu"]
+
+
+def spectrum_velocities(results):
+    """The face velocities (as written) whose sub-case runs sub-micron
+    particles: the spectrum."""
+    return [U for U in results.unique("U0")
+            if (results.where(U0=U)["d"] < 1e-6).any()]
+
+
+def mpps_rows(results, fibre):
+    """Per face velocity of the spectrum: the diameter of the lowest stick
+    efficiency among those simulated, that efficiency and its standard
+    error, and Lee & Liu's (1980) closed form."""
+    rows = []
+    for U in spectrum_velocities(results):
+        stick = results.where(U0=U, model="stick")
+        i = int(stick["eta"].argmin())
+        d, eta = fibre.lee_liu_mpps(float(U))
+        rows.append([U, stick.text("d")[i], stick.text("eta")[i],
+                     stick.text("etaSE")[i], "stick", "%.4g" % d,
+                     "%.4g" % eta])
     return rows
 
 
 def correlation_rows(fibre, velocities):
-    """Smooth curves per face velocity, 0.8-12 um, where the impaction fit
-    holds (R < 0.4) and eta_R + eta_I <= 1."""
+    """Smooth curves per face velocity, 0.01-12 um: each mechanism and the
+    sum (etaI and eta empty where the impaction fit does not hold)."""
     rows = []
     for U in velocities:
-        for i in range(101):
-            d = 0.8e-6 * math.exp(i / 100 * math.log(15))
-            stk = fibre.stokes(d, float(U))
-            R = d / fibre.dFibre
-            eta_R = correlations.interception(fibre.alpha, R)
-            eta_I = correlations.impaction(fibre.alpha, R, stk)
-            if eta_I is not None and eta_I >= 0 and eta_R + eta_I <= 1:
-                rows.append([U] + ["%.5g" % v for v in
-                                   (stk, R, eta_R, eta_I, eta_R + eta_I)])
+        for d in curves.log_space(0.01e-6, 12e-6, 181):
+            c = fibre.correlations(d, float(U))
+            rows.append([U, "%.5g" % d, "%.5g" % fibre.stokes(d, float(U)),
+                         "%.5g" % (d / fibre.dFibre)] + [
+                _number(c[k], "%.5g") for k in ("etaD", "etaDLL", "etaR",
+                                                "etaDR", "etaI", "etaSum")])
     return rows
 
 
@@ -151,64 +371,125 @@ def angle_rows(fibre, case="."):
     return rows
 
 
-def headline(results, fibre):
+def headline(results, mpps, fibre):
     lines = ["", "fibreFilter: single-fibre efficiency, d_f = %g um, solidity"
-             " %g, 2D fibre row" % (fibre.dFibre * 1e6, fibre.alpha),
-             "eta +- binomial standard error, %d parcels per point; "
-             "correlations: Kuwabara flow" % fibre.parcels, "",
-             "%-6s %-6s %-6s %-6s %-6s %-15s %-15s %-7s %-7s %s" % (
-                 "U0", "Re_f", "d [um]", "Stk", "R", "stick", "adhesive",
-                 "eta_R", "eta_I", "eta_R + eta_I")]
+             " %g, 2D fibre row; slip and Brownian motion (%g K)" % (
+                 fibre.dFibre * 1e6, fibre.alpha, fibre.T),
+             "eta +- binomial standard error (parcels: results.csv); "
+             "correlations, Kuwabara flow: eta_D Stechkina & Fuchs,",
+             "eta_R Lee & Liu, eta_DR and eta_I Stechkina, Kirsch & Fuchs; "
+             "sum = eta_D + eta_R + eta_DR + eta_I", "",
+             "%-5s %-6s %-9s %-6s %-8s %-19s %-19s %-8s %-8s %-8s %-8s %s" % (
+                 "U0", "d [um]", "Stk", "R", "Pe", "stick", "adhesive",
+                 "eta_D", "eta_R", "eta_DR", "eta_I", "sum")]
     keys = list(dict.fromkeys(zip(results.text("U0"), results.text("d"))))
     for U, d in keys:
         of = {cloud: results.where(U0=U, d=d, model=cloud)
               for cloud in CLOUDS}
         row = of["stick"]
-        line = "%-6s %-6.3g %-6.3g %-6.3g %-6.3g %6.3f +- %-5.3f " \
-            "%6.3f +- %-5.3f %-7.3f " % (
-                U, row["Re_f"][0], float(d) * 1e6, row["Stk"][0], row["R"][0],
-                of["stick"]["eta"][0], of["stick"]["etaSE"][0],
-                of["adhesive"]["eta"][0], of["adhesive"]["etaSE"][0],
-                row["etaR"][0])
-        eta_I = row.text("etaI")[0]
-        if eta_I:
-            line += "%-7.3f %.3f" % (float(eta_I),
-                                     row["etaR"][0] + float(eta_I))
-        else:
-            line += "%-7s %s" % ("-", "- (R >= 0.4)")
-        lines.append(line)
+
+        def cell(name):
+            text = row.text(name)[0]
+            return "%-8.3g" % float(text) if text else "%-8s" % "-"
+
+        def eta(cloud):
+            return "%.4g +- %.2g" % (of[cloud]["eta"][0],
+                                     of[cloud]["etaSE"][0])
+        lines.append(("%-5s %-6.3g %-9.3g %-6.3g %-8.3g %-19s %-19s "
+                      "%s %s %s %s %s" % (
+                          U, float(d) * 1e6, row["Stk"][0], row["R"][0],
+                          row["Pe"][0], eta("stick"), eta("adhesive"),
+                          cell("etaD"), cell("etaR"), cell("etaDR"),
+                          cell("etaI"), cell("etaSum"))).rstrip())
+    lines += ["", "(eta_I, sum: '-' where R >= 0.4, beyond the impaction fit)"]
+    for U, d, eta, se, model, dLL, etaLL in zip(
+            mpps.text("U0"), mpps["d"], mpps["eta"], mpps["etaSE"],
+            mpps.text("model"), mpps["dLeeLiu"], mpps["etaLeeLiu"]):
+        lines.append("most penetrating size at %s m/s (%s): %.3g um, eta %.3g "
+                     "+- %.2g; Lee & Liu (1980): %.3g um, %.3g (ratios %.2f, "
+                     "%.2f)" % (U, model, d * 1e6, eta, se, dLL * 1e6, etaLL,
+                                d / dLL, eta / etaLL))
     lines += ["", "parcels still airborne at the end: stick %d, adhesive %d"
               % tuple(results.where(model=c).sum("airborne") for c in CLOUDS),
-              "", "Results: results.csv, correlation.csv, angles.csv; plots: "
-              "efficiency.png, angles.png"]
+              "", "Results: results.csv, mpps.csv, correlation.csv, "
+              "angles.csv; plots: efficiency.png, spectrum.png, angles.png"]
     return lines
 
 
 def plot_efficiency(path, results, correlation, fibre):
+    """eta against Stk, 1-10 um, per face velocity, with the correlations'
+    sum where the impaction fit holds and the sum is at most 1."""
     from .. import plots
     fig, ax = plots.figure(10, 6.5)
     for c, U in enumerate(results.unique("U0")):
         colour = "C%d" % c
         for cloud, style in (("stick", "o-"), ("adhesive", "o--")):
-            rows = results.where(U0=U, model=cloud)
+            rows = results.where(U0=U, model=cloud, d=lambda d: float(d)
+                                 >= 1e-6)
             ax.errorbar(rows["Stk"], rows["eta"], yerr=rows["etaSE"],
                         fmt=style, color=colour, capsize=3,
                         mfc=colour if cloud == "stick" else "none",
                         label=f"{U} m/s {cloud}")
-        curve = correlation.where(U0=U)
-        ax.plot(curve["Stk"], curve["eta"], ":", color=colour, lw=2,
-                label=f"{U} m/s correlation")
-    plots.axes(ax, "Stokes number Stk = rho_p d^2 U_0 / (18 mu d_f)",
+        curve = correlation.where(
+            U0=U, d=lambda d: float(d) >= 0.8e-6,
+            etaSum=lambda e: e != "" and 0 <= float(e) <= 1)
+        ax.plot(curve["Stk"], curve["etaSum"], ":", color=colour, lw=2,
+                label=f"{U} m/s correlations")
+    plots.axes(ax, "Stokes number Stk = rho_p Cc d^2 U_0 / (18 mu d_f)",
                "single-fibre efficiency",
-               "fibre %g um, solidity %g; solid: stick, dashed: adhesive, "
-               "dotted: Kuwabara-flow eta_R + eta_I"
+               "fibre %g um, solidity %g, 1-10 um; solid: stick, dashed: "
+               "adhesive, dotted: Kuwabara-flow sum"
                % (fibre.dFibre * 1e6, fibre.alpha),
                xlim=(0.01, 60), ylim=(0, 1.6), xlog=True)
     ax.legend(loc="center left", bbox_to_anchor=(1, 0.5))
     plots.save(fig, path)
 
 
-def plot_angles(path, angles, parcels):
+def plot_spectrum(path, results, correlation, mpps, fibre):
+    """eta against d (log-log) at each face velocity of the spectrum: the
+    simulation, stick and adhesive, +- standard error; each mechanism's
+    correlation and their sum; the most penetrating size found and Lee &
+    Liu's."""
+    from .. import plots
+    velocities = spectrum_velocities(results)
+    fig, axes = plots.figure(11, 6.5 * len(velocities), rows=len(velocities))
+    for ax, U in zip([axes] if len(velocities) == 1 else axes, velocities):
+        curve = correlation.where(U0=U)
+        d = curve["d"] * 1e6
+        for name, style, label in (
+                ("etaD", "C0--", "diffusion, Stechkina & Fuchs (1966)"),
+                ("etaDLL", "C0:", "diffusion, Lee & Liu (1982)"),
+                ("etaR", "C2--", "interception, Lee & Liu (1982)"),
+                ("etaDR", "C4--",
+                 "diffusion-interception, Stechkina et al. (1969)")):
+            ax.plot(d, curve[name], style, lw=1.5, label=label)
+        valid = curve.where(etaI=lambda e: e != "" and float(e) > 0)
+        ax.plot(valid["d"] * 1e6, valid["etaI"], "C1--", lw=1.5,
+                label="impaction, Stechkina et al. (1969), R < 0.4")
+        ax.plot(valid["d"] * 1e6, valid["etaSum"], "k-", lw=2,
+                label="sum of the four")
+        for cloud, style in (("stick", "o"), ("adhesive", "s")):
+            rows = results.where(U0=U, model=cloud)
+            ax.errorbar(rows["d"] * 1e6, rows["eta"], yerr=rows["etaSE"],
+                        fmt=style, color="C3", capsize=3, ms=7 if cloud ==
+                        "adhesive" else 5, mfc="C3" if cloud == "stick" else
+                        "none", label=f"simulation, {cloud} walls")
+        m = mpps.where(U0=U)
+        if len(m):
+            ax.plot(m["dLeeLiu"] * 1e6, m["etaLeeLiu"], "k*", ms=14,
+                    label="MPPS, Lee & Liu (1980)")
+            ax.plot(m["d"] * 1e6, m["eta"], "*", color="C3", ms=14, mfc="none",
+                    label="MPPS found")
+        ax.set_yscale("log")
+        plots.axes(ax, "particle diameter [um]", "single-fibre efficiency",
+                   "fibre %g um, solidity %g, %s m/s: slip and Brownian "
+                   "motion on" % (fibre.dFibre * 1e6, fibre.alpha, U),
+                   xlim=(0.01, 12), ylim=(3e-4, 3), xlog=True)
+        ax.legend(loc="upper center", fontsize=8, ncol=2)
+    plots.save(fig, path)
+
+
+def plot_angles(path, angles):
     from .. import plots
     subs = angles.unique("case")
     fig, axes = plots.figure(10, 7.5, rows=2, columns=2)
@@ -227,7 +508,7 @@ def plot_angles(path, angles, parcels):
         ax.legend(loc="upper right")
     for ax in axes[len(subs):]:
         ax.set_visible(False)
-    fig.suptitle("Where the fibre captures: %d parcels per case" % parcels)
+    fig.suptitle("Where the fibre captures (parcels per case: results.csv)")
     plots.save(fig, path)
 
 
@@ -245,15 +526,19 @@ def run(case="."):
                         f"no {name} of the cloud {cloud} in {folder}")
     tables.write_csv("results.csv", RESULT_COLUMNS, result_rows(fibre, subs))
     results = tables.read("results.csv")
+    tables.write_csv("mpps.csv", MPPS_COLUMNS, mpps_rows(results, fibre))
+    mpps = tables.read("mpps.csv")
     tables.write_csv("correlation.csv",
-                     ["U0", "Stk", "R", "etaR", "etaI", "eta"],
+                     ["U0", "d", "Stk", "R", "etaD", "etaDLL", "etaR", "etaDR",
+                      "etaI", "etaSum"],
                      correlation_rows(fibre, results.unique("U0")))
+    correlation = tables.read("correlation.csv")
     tables.write_csv("angles.csv", ["case", "U0", "d", "Stk", "model",
                                     "angle", "captured"], angle_rows(fibre))
-    lines = headline(results, fibre)
+    lines = headline(results, mpps, fibre)
     with open("log.table", "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
-    plot_efficiency("efficiency.png", results, tables.read("correlation.csv"),
-                    fibre)
-    plot_angles("angles.png", tables.read("angles.csv"), fibre.parcels)
+    plot_efficiency("efficiency.png", results, correlation, fibre)
+    plot_spectrum("spectrum.png", results, correlation, mpps, fibre)
+    plot_angles("angles.png", tables.read("angles.csv"))
