@@ -33,7 +33,7 @@ ImpactModel::ImpactModel
     requireInRange("minReboundSpeed", minReboundSpeed_, 0, maxSpeed);
 
     complianceSum_ = particleMaterial_.compliance() + wallMaterial_.compliance();
-    contactModulus_ = 1/(pi*complianceSum_);
+    contactModulus_ = contactModulus(particleMaterial_, wallMaterial_);
     contactRadiusFactor_ = 15*pi/8*complianceSum_;
 }
 
