@@ -15,7 +15,7 @@ import os
 
 import pytest
 
-from adhesivewall import foam
+from adhesivewall import curves, foam
 from adhesivewall.tutorials import tube_diffusion as tube
 
 N = 20000
@@ -35,20 +35,20 @@ def radii(points):
     return [math.hypot(y, z) / R for y, z in points]
 
 
-def test_radial_cdf_is_the_flux_fraction():
+def test_poiseuille_flux_fraction():
     # F(s) = int_0^s 4 (1 - t^2) t dt: its ends and a midpoint by quadrature
-    assert tube.radial_cdf(0) == 0
-    assert tube.radial_cdf(1) == 1
+    assert curves.poiseuille_flux_fraction(0) == 0
+    assert curves.poiseuille_flux_fraction(1) == 1
     m = 100000
     quadrature = sum(4 * (1 - t * t) * t / m
                      for t in ((i + 0.5) / m * 0.6 for i in range(m))) * 0.6
-    assert tube.radial_cdf(0.6) == pytest.approx(quadrature, rel=1e-9)
+    assert curves.poiseuille_flux_fraction(0.6) == pytest.approx(quadrature, rel=1e-9)
 
 
 def test_radii_follow_the_flux():
     s = radii(tube.flux_weighted_disc(N, R, seed=1))
     assert max(s) < 1
-    assert ks_distance(s, tube.radial_cdf) < KS_BOUND
+    assert ks_distance(s, curves.poiseuille_flux_fraction) < KS_BOUND
 
 
 def test_angles_are_uniform():
@@ -63,8 +63,8 @@ def test_radii_inside_a_smaller_circle_follow_the_conditional_flux(s_max):
     # polygon's inscribed circle
     s = radii(tube.flux_weighted_disc(N, R, seed=3, r_max=s_max * R))
     assert max(s) < s_max
-    F_max = tube.radial_cdf(s_max)
-    assert ks_distance(s, lambda x: tube.radial_cdf(x) / F_max) < KS_BOUND
+    F_max = curves.poiseuille_flux_fraction(s_max)
+    assert ks_distance(s, lambda x: curves.poiseuille_flux_fraction(x) / F_max) < KS_BOUND
 
 
 def test_the_distance_tells_flux_from_area_weighting():
@@ -73,7 +73,7 @@ def test_the_distance_tells_flux_from_area_weighting():
     import random
     rng = random.Random(4)
     s = [math.sqrt(rng.random()) for _ in range(N)]
-    assert ks_distance(s, tube.radial_cdf) > 10 * KS_BOUND
+    assert ks_distance(s, curves.poiseuille_flux_fraction) > 10 * KS_BOUND
     assert ks_distance(s, lambda x: x * x) < KS_BOUND
 
 

@@ -25,6 +25,21 @@ def binomial_se(successes, trials):
     return math.sqrt(p * (1 - p) / trials)
 
 
+def poiseuille_flux_fraction(s):
+    """The fraction of fully developed laminar (Poiseuille) flow through a
+    tube that passes within s = r/R of its axis:
+    F(s) = int_0^s 4 (1 - t^2) t dt = 2 s^2 - s^4."""
+    return 2 * s * s - s ** 4
+
+
+def poiseuille_flux_radius(F):
+    """The inverse of poiseuille_flux_fraction: the s = r/R enclosing the
+    fraction F in [0, 1] of the flow. F = 1 - (1 - s^2)^2, so
+    s^2 = 1 - sqrt(1 - F), computed as F/(1 + sqrt(1 - F)) (no
+    cancellation for small F)."""
+    return math.sqrt(F / (1 + math.sqrt(1 - F)))
+
+
 def log_space(first, last, n):
     """n values from first to last, evenly spaced in their logarithm."""
     return [first * (last / first) ** (i / (n - 1)) for i in range(n)]

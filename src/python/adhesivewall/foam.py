@@ -254,3 +254,16 @@ def parcel_count(case=".", time=None, cloud="kinematicCloud"):
         if os.path.exists(path):
             return len(list_file(path))
     return 0
+
+
+def fixed_size_injectors(case=".",
+                         properties="constant/kinematicCloudProperties"):
+    """The injection models of a cloud's properties, each of one diameter
+    (a fixedValue size distribution), as (name, injectorID, d,
+    positionsFile) in the dictionary's order."""
+    models = dictionary(properties, "subModels/injectionModels", case=case)
+    return [(name, int(entry["injectorID"]),
+             float(entry["sizeDistribution"]["fixedValueDistribution"]
+                   ["value"]),
+             str(entry["positionsFile"]))
+            for name, entry in models.items()]

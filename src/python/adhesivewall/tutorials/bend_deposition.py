@@ -52,7 +52,7 @@ def flow_weighted_positions(n, a, x):
     list."""
     rows = []
     for i in range(n):
-        r = a * math.sqrt(1 - math.sqrt(1 - (i + 0.5) / n))
+        r = a * curves.poiseuille_flux_radius((i + 0.5) / n)
         t = i * GOLDEN_ANGLE
         rows.append("(%s %.9g %.9g)" % (x, r * math.cos(t), r * math.sin(t)))
     return rows
@@ -61,15 +61,9 @@ def flow_weighted_positions(n, a, x):
 def injectors(model):
     """(injectorID, diameter) of each injector of a sub-case, and the
     parcels each injects (its positions file)."""
-    models = foam.dictionary("constant/kinematicCloudProperties",
-                             "subModels/injectionModels", case=model)
-    found = []
-    positions = set()
-    for name, injector in models.items():
-        distribution = injector["sizeDistribution"]
-        diameter = distribution["fixedValueDistribution"]["value"]
-        found.append((int(injector["injectorID"]), float(diameter)))
-        positions.add(injector["positionsFile"])
+    entries = foam.fixed_size_injectors(model)
+    found = [(injector_id, d) for _, injector_id, d, _ in entries]
+    positions = {path for *_, path in entries}
     if len(positions) != 1:
         raise ValueError(f"{model}: injectors with positions {positions}")
     parcels = len(foam.list_file(os.path.join(model, "constant",

@@ -229,19 +229,17 @@ def injectors(folder):
     """The injectors of a particle sub-case, as (injectorID, d, parcels,
     gap, band): its positions evenly spaced `gap` apart (one parcel per
     gap of flow), the outermost within `band` of the axis."""
-    models = foam.dictionary("constant/stickProperties",
-                             "subModels/injectionModels", case=folder)
     found = []
-    for name, entry in models.items():
-        d = float(entry["sizeDistribution"]["fixedValueDistribution"]["value"])
+    for name, injector_id, d, path in foam.fixed_size_injectors(
+            folder, "constant/stickProperties"):
         ys = sorted(p[1] for p in foam.list_file(os.path.join(
-            folder, "constant", str(entry["positionsFile"]))))
+            folder, "constant", path)))
         gaps = [b - a for a, b in zip(ys, ys[1:])]
         gap = min(gaps)
         if max(gaps) > gap * (1 + 1e-6) and max(gaps) < gap * 1.5:
             raise ValueError(f"{folder}: {name}: the positions are not evenly "
                              "spaced")
-        found.append((int(entry["injectorID"]), d, len(ys), gap,
+        found.append((injector_id, d, len(ys), gap,
                       max(abs(ys[0]), abs(ys[-1])) + gap / 2))
     return sorted(found)
 

@@ -40,30 +40,24 @@ SE_FACTOR = 3
 
 # --- The parcels' start positions ------------------------------------------
 
-def radial_cdf(s):
-    """The fraction of Poiseuille flow through the tube within s = r/R:
-    F(s) = int_0^s 4 (1 - t^2) t dt = 2 s^2 - s^4."""
-    return 2 * s * s - s ** 4
-
-
 def flux_weighted_disc(n, R, seed, r_max=None):
     """n points (y, z) over the disc r < R with the probability density of
     the Poiseuille flux through it, proportional to (1 - r^2/R^2) r dr
     dtheta: the parcels that enter a tube in fully developed laminar flow
     in a given time (sampling uniformly in area would over-weight the slow
-    flow near the wall). The radius by inversion of the radial CDF,
-    F = 2 s^2 - s^4 = 1 - (1 - s^2)^2, s^2 = 1 - sqrt(1 - F) (computed as
-    F/(1 + sqrt(1 - F))); the angle uniform. With r_max < R the
+    flow near the wall). The radius by inversion of the radial CDF
+    F = 2 s^2 - s^4 (curves.poiseuille_flux_radius); the angle uniform.
+    With r_max < R the
     distribution conditioned on r < r_max (F uniform below F(r_max/R)).
     Reproducible: Python's Mersenne Twister seeded with `seed`."""
     if n < 0 or R <= 0:
         raise ValueError(f"flux_weighted_disc: n = {n}, R = {R}")
-    f_max = 1.0 if r_max is None else radial_cdf(min(r_max / R, 1.0))
+    f_max = 1.0 if r_max is None \
+        else curves.poiseuille_flux_fraction(min(r_max / R, 1.0))
     rng = random.Random(seed)
     points = []
     for _ in range(n):
-        F = rng.random() * f_max
-        s = math.sqrt(F / (1 + math.sqrt(1 - F)))
+        s = curves.poiseuille_flux_radius(rng.random() * f_max)
         theta = 2 * math.pi * rng.random()
         points.append((R * s * math.cos(theta), R * s * math.sin(theta)))
     return points
@@ -144,13 +138,7 @@ def settings(case="."):
 def injectors(case="."):
     """The cloud's injectors as (name, injectorID, d, positionsFile), in
     order of d."""
-    models = foam.dictionary("constant/kinematicCloudProperties",
-                             "subModels/injectionModels", case=case)
-    found = []
-    for name, injector in models.items():
-        d = injector["sizeDistribution"]["fixedValueDistribution"]["value"]
-        found.append((name, int(injector["injectorID"]), float(d),
-                      str(injector["positionsFile"])))
+    found = foam.fixed_size_injectors(case)
     if not found:
         raise ValueError(f"{case}: no injectors")
     return sorted(found, key=lambda i: i[2])
