@@ -219,6 +219,7 @@ Impact3D ImpactModel::impact
             break;
         case Fate::capture:
         case Fate::escape:
+        case Fate::resuspension:
             break;
     }
     return out;

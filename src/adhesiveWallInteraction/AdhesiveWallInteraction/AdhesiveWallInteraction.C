@@ -3,6 +3,7 @@
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
 #include "wallPolyPatch.H"
+#include "CounterRandom.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -48,6 +49,11 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
             gradeGroup(p),
             impact.outcome, nParticle, mass, p.origProc(), p.origId()
         );
+    }
+
+    if (sites_ && impact.outcome == Fate::capture)
+    {
+        capturedThisStep_.insert({p.origProc(), p.origId()});
     }
 
     if (deposits_ && impact.outcome != Fate::rebound)
@@ -360,6 +366,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
             coeffs_.sizeClassEdges()
         );
     }
+    setUpResuspension();
     restore();
 
     openFiles(cloud.name());
@@ -556,6 +563,13 @@ bool Foam::AdhesiveWallInteraction<CloudType>::interact
 template<class CloudType>
 void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
 {
+    // Resuspension first, so that the totals, the balance and what a write
+    // time stores hold it (writeInfo is the model's end-of-step call)
+    if (sites_)
+    {
+        resuspend();
+    }
+
     // The full tables at write times (or every step, logTables yes),
     // else one line per patch
     const List<fateStatistics::row> totals(statistics_.totals());
@@ -597,7 +611,8 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
             wallInteractionCloud::injectedMass(this->owner()),
             wallInteractionCloud::airborneMass(this->owner()),
             fateStatistics::mass(totals, brachDunn::Fate::capture),
-            fateStatistics::mass(totals, brachDunn::Fate::escape)
+            fateStatistics::mass(totals, brachDunn::Fate::escape),
+            fateStatistics::mass(totals, brachDunn::Fate::resuspension)
         );
     }
     if (this->writeTime())
@@ -651,4 +666,161 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeSurfaceContacts()
     {
         this->setModelProperty("surfaceContact", totals);
     }
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::setUpResuspension()
+{
+    const polyBoundaryMesh& patches = compat::boundaryMesh(this->owner().mesh());
+    boolList resuspends(patches.size(), false);
+    bool any = false;
+    forAll(patches, patchi)
+    {
+        const wallInteractionEntry* entry = coeffs_.entries().entryOf(patchi);
+        resuspends[patchi] = entry && entry->resuspension();
+        if (resuspends[patchi] && coeffs_.removeCaptured())
+        {
+            checkedInput::fail
+            (
+                this->coeffs(), "capture", "remove",
+                "must be stick where an entry resuspends its deposits"
+                " (entry " + std::string(entry->name()) + " on patch "
+              + patches[patchi].name() + "): removed parcels cannot leave"
+                " the wall again"
+            );
+        }
+        any = any || resuspends[patchi];
+    }
+    if (any)
+    {
+        sites_ = std::make_shared<depositSites>(this->owner().mesh(), resuspends);
+    }
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::resuspend()
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const Time& time = mesh.time();
+    const scalar dt = time.deltaTValue();
+    // The per-step draws: counter = time index (>= 1); the adhesion's: 0.
+    // The key's high bits set apart these streams from other users of
+    // (seed, origProc, origId) (exactBrownianMotion)
+    constexpr std::uint64_t stream = std::uint64_t(1) << 62;
+    const std::uint64_t step = time.timeIndex();
+
+    sites_->update(this->owner().U(), this->owner().rho(), this->owner().mu());
+
+    for (auto& p : this->owner())
+    {
+        if
+        (
+            compat::isActive(p)
+         || capturedThisStep_.count({p.origProc(), p.origId()})
+        )
+        {
+            continue;
+        }
+        const point position = compat::position(p, mesh);
+        const auto s = sites_->find(p.cell(), position, p.d());
+        if (!s)
+        {
+            continue;
+        }
+        const resuspensionSettings& settings =
+            *coeffs_.entries().entryOf(s->patchi)->resuspension();
+        const depositSites::flow& flow = sites_->flowAt(*s);
+        const std::uint64_t key1 = std::uint64_t(p.origProc()) | stream;
+        const std::uint64_t key2 = std::uint64_t(p.origId());
+        const scalar r = 0.5*p.d();
+
+        scalar leaving = 0;
+        try
+        {
+            const scalar fPrime = settings.model.reducedAdhesion
+            (
+                r,
+                brachDunn::uniformFromBits
+                (
+                    brachDunn::randomBits(settings.seed, key1, key2, 0)
+                )
+            );
+            leaving = settings.model.leavingProbability
+            (
+                r, fPrime, flow.tauW, flow.rho, flow.nu, dt
+            );
+        }
+        catch (const brachDunn::InputError& err)
+        {
+            FatalErrorInFunction
+                << "Deposit at " << position << " on patch "
+                << compat::boundaryMesh(mesh)[s->patchi].name()
+                << " (resuspension): " << err.what() << exit(FatalError);
+        }
+        const bool leaves =
+            leaving >= 1
+         || (
+                leaving > 0
+             && brachDunn::uniformFromBits
+                (
+                    brachDunn::randomBits(settings.seed, key1, key2, step)
+                ) < leaving
+            );
+        if (leaves)
+        {
+            release(p, *s, Foam::sqrt(flow.tauW/flow.rho));
+        }
+    }
+    capturedThisStep_.clear();
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::release
+(
+    typename CloudType::parcelType& p,
+    const depositSites::site& s,
+    const scalar frictionVelocity
+)
+{
+    const polyPatch& pp = compat::boundaryMesh(this->owner().mesh())[s.patchi];
+    const scalar nParticle = p.nParticle();
+    const scalar mass = nParticle*p.mass();
+
+    statistics_.add
+    (
+        statistics_.rowOf(s.patchi, compat::parcelInjectorId(p), p.d()),
+        brachDunn::Fate::resuspension, nParticle, mass, frictionVelocity, 0
+    );
+    if (grade_)
+    {
+        grade_->fated
+        (
+            gradeGroup(p), brachDunn::Fate::resuspension, nParticle, mass,
+            p.origProc(), p.origId()
+        );
+    }
+    if (deposits_)
+    {
+        deposits_->addCapture(s.patchi, s.facei, -mass, -nParticle);
+    }
+    if (records_ && records_->active())
+    {
+        const point position = compat::position(p, this->owner().mesh());
+        records_->add
+        ({
+            this->owner().mesh().time().value(),
+            scalar(pp.index()), scalar(s.facei),
+            position.x(), position.y(), position.z(),
+            p.d(), nParticle, 0, 0, scalar(brachDunn::Fate::resuspension),
+            0, 0, 0, 0
+        });
+    }
+
+    // Airborne again, at rest, clear of the wall it sat on
+    compat::setActive(p, true);
+    p.U() = Zero;
+    compat::displace(p, this->owner().mesh(), -1e-3*p.d()*s.normal);
 }

@@ -162,7 +162,10 @@ void Foam::fateStatistics::restore(const label patch, const stringList& values)
     {
         return;
     }
-    if (values.size() != nGroups()*rowSize)
+    // Totals stored before resuspension was counted have no such sums
+    constexpr label oldRowSize = rowSize - 5;
+    const bool old = values.size() == nGroups()*oldRowSize;
+    if (values.size() != nGroups()*rowSize && !old)
     {
         FatalErrorInFunction
             << "The statistics stored for patch " << patchNames_[patch]
@@ -177,6 +180,10 @@ void Foam::fateStatistics::restore(const label patch, const stringList& values)
     {
         for (sums& s : stored_[patch*nGroups() + j])
         {
+            if (old && &s == &stored_[patch*nGroups() + j].back())
+            {
+                continue;
+            }
             for (scalar* v : {&s.parcels, &s.particles, &s.mass, &s.speed, &s.angle})
             {
                 const std::string& value = values[i++];
@@ -229,7 +236,10 @@ Foam::fateStatistics::columns()
             c.push_back({std::string("impact") + name, [q = q](const row& r)
             {
                 scalar sum = 0;
-                for (const sums& s : r) sum += s.*q;
+                for (const Fate fate : brachDunn::impactFates)
+                {
+                    sum += of(r, fate).*q;
+                }
                 return sum;
             }});
         }
@@ -341,6 +351,10 @@ void Foam::fateStatistics::print(Ostream& os, const List<row>& totals) const
                 << c.parcels << ", " << c.particles << ", " << c.mass << nl
                 << "      - escapes                     = "
                 << e.parcels << ", " << e.particles << ", " << e.mass << nl
+                << "      - resuspended                 = "
+                << of(r, Fate::resuspension).parcels << ", "
+                << of(r, Fate::resuspension).particles << ", "
+                << of(r, Fate::resuspension).mass << nl
                 << "      - captured: mean impact speed, angle = "
                 << mean(c.speed, c.particles) << " m/s, "
                 << mean(c.angle, c.particles) << " deg" << nl
@@ -364,10 +378,10 @@ void Foam::fateStatistics::printSummary
         for (label group = 0; group < nGroups(); ++group)
         {
             const row& r = totals[patch*nGroups() + group];
-            for (const sums& s : r)
+            for (const Fate fate : brachDunn::impactFates)
             {
-                impacts.parcels += s.parcels;
-                impacts.particles += s.particles;
+                impacts.parcels += of(r, fate).parcels;
+                impacts.particles += of(r, fate).particles;
             }
             captures.parcels += of(r, Fate::capture).parcels;
             captures.particles += of(r, Fate::capture).particles;

@@ -120,6 +120,15 @@ void Foam::gradeEfficiency::fated
     const label origId
 )
 {
+    if (outcome == brachDunn::Fate::resuspension)
+    {
+        // Airborne again: the captures are net of it
+        sums& net = step_[group][captured];
+        net.parcels -= 1;
+        net.particles -= nParticle;
+        net.mass -= mass;
+        return;
+    }
     if (outcome != brachDunn::Fate::capture && outcome != brachDunn::Fate::escape)
     {
         return;

@@ -39,16 +39,18 @@ void Foam::massBalance::update
     const scalar injected,
     const scalar airborne,
     const scalar captured,
-    const scalar escaped
+    const scalar escaped,
+    const scalar resuspended
 )
 {
     injected_ = injected;
     airborne_ = airborne;
     captured_ = captured;
     escaped_ = escaped;
+    resuspended_ = resuspended;
     if (!initial_)
     {
-        initial_ = airborne + captured + escaped - injected;
+        initial_ = airborne + captured - resuspended + escaped - injected;
     }
 }
 
@@ -56,7 +58,8 @@ void Foam::massBalance::update
 Foam::scalar Foam::massBalance::residual() const
 {
     return
-        injected_ + initial_.value_or(0) - (airborne_ + captured_ + escaped_);
+        injected_ + initial_.value_or(0)
+      - (airborne_ + captured_ - resuspended_ + escaped_);
 }
 
 
@@ -74,9 +77,12 @@ const std::vector<Foam::massBalance::column>& Foam::massBalance::columns()
             { return b.captured_; }},
         {"escaped", "escaped", [](const massBalance& b)
             { return b.escaped_; }},
+        {"resuspended", "resuspended", [](const massBalance& b)
+            { return b.resuspended_; }},
         {
             "residual",
-            "injected + initial - (airborne + captured + escaped)",
+            "injected + initial - (airborne + captured - resuspended"
+            " + escaped)",
             [](const massBalance& b) { return b.residual(); }
         },
     };

@@ -174,8 +174,9 @@ Foam::wallInteractionEntry::wallInteractionEntry
     mu_(0)
 {
     // The entries with coefficients take only their own keywords, so that a
-    // misspelt one is not ignored; stick, escape and none read nothing, and
-    // may keep an adhesive entry's coefficients while cases are compared
+    // misspelt one is not ignored; stick, escape and none read nothing
+    // else, and may keep an adhesive entry's coefficients while cases are
+    // compared
     if (type_ == interaction::rebound)
     {
         readRebound(dict);
@@ -183,6 +184,10 @@ Foam::wallInteractionEntry::wallInteractionEntry
     else if (type_ == interaction::adhesive)
     {
         readAdhesive(dict, particle, magnitudes);
+    }
+    else if (type_ == interaction::stick)
+    {
+        resuspension_ = readResuspension(dict, std::nullopt, particle, magnitudes);
     }
 }
 
@@ -242,7 +247,7 @@ void Foam::wallInteractionEntry::readAdhesive
         dict,
         {
             "type", "patchType", "E", "nu", "restitution", "adhesion",
-            "friction", "momentCoeff", "minReboundSpeed"
+            "friction", "momentCoeff", "minReboundSpeed", "resuspension"
         },
         "patch entries of type adhesive"
     );
@@ -280,6 +285,7 @@ void Foam::wallInteractionEntry::readAdhesive
         dict, "minReboundSpeed",
         brachDunn::ImpactModel::defaultMinReboundSpeed
     );
+    resuspension_ = readResuspension(dict, wall, particle, magnitudes);
     const brachDunn::ElasticMaterial particleConstants = particle();
     model_.emplace
     (
@@ -382,6 +388,11 @@ Foam::string Foam::wallInteractionEntry::describe() const
             << " } friction { " << m.friction().describe()
             << " } momentCoeff " << m.momentCoeff()
             << " minReboundSpeed " << m.minReboundSpeed() << ")";
+    }
+    if (resuspension_)
+    {
+        os  << "; resuspension " << resuspension_->model.describe()
+            << " seed " << resuspension_->seed;
     }
     return os.str();
 }

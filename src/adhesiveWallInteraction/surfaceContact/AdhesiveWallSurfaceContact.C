@@ -41,6 +41,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::setUp()
     (
         mesh, model_->wallPatches(), 0.5*maxDiameter_
     );
+    model_->useWallTriangles(walls_);
     Info<< "    " << this->modelName() << ": contact at the surface with "
         << returnReduce(walls_->size() - walls_->nRemote(), sumOp<label>())
         << " wall triangles of " << model_->wallPatches().size()

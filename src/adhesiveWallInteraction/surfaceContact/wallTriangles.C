@@ -307,4 +307,34 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
 }
 
 
+std::optional<std::pair<int, Foam::scalar>> Foam::wallTriangles::nearestLocal
+(
+    const label celli,
+    const point& p
+) const
+{
+    std::optional<std::pair<int, scalar>> nearest;
+    const brachDunn::Vector3 a(toCore(p));
+    for (int k = cellStart_[celli]; k < cellStart_[celli + 1]; ++k)
+    {
+        const int t = cellTriangles_[k];
+        if (origins_[t].proc != Pstream::myProcNo())
+        {
+            continue;
+        }
+        const brachDunn::PreparedTriangle& prepared = triangles_[t];
+        const brachDunn::Vector3 c = brachDunn::closestPoint
+        (
+            {prepared.vertex[0], prepared.vertex[1], prepared.vertex[2]}, a
+        );
+        const scalar distance = std::sqrt(dot(c - a, c - a));
+        if (!nearest || distance < nearest->second)
+        {
+            nearest = std::make_pair(t, distance);
+        }
+    }
+    return nearest;
+}
+
+
 // ************************************************************************* //

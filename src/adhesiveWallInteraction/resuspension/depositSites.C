@@ -1,0 +1,101 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
+#include "depositSites.H"
+#include "releaseCompat.H"
+
+Foam::depositSites::depositSites(const fvMesh& mesh, const boolList& resuspends)
+:
+    mesh_(mesh),
+    resuspends_(resuspends),
+    flow_(resuspends.size())
+{}
+
+
+std::optional<Foam::depositSites::site> Foam::depositSites::find
+(
+    const label celli,
+    const point& p,
+    const scalar d
+) const
+{
+    const polyBoundaryMesh& patches = compat::boundaryMesh(mesh_);
+    const scalar reach = 0.5*d*(1 + 1e-3);
+    std::optional<site> nearest;
+    scalar nearestDistance = reach;
+
+    for (const label facei : mesh_.cells()[celli])
+    {
+        if (mesh_.isInternalFace(facei))
+        {
+            continue;
+        }
+        const label patchi = patches.whichPatch(facei);
+        if (!resuspends_[patchi])
+        {
+            continue;
+        }
+        const scalar distance =
+            mesh_.faces()[facei].nearestPoint(p, mesh_.points()).distance();
+        if (distance <= nearestDistance)
+        {
+            nearestDistance = distance;
+            const vector& area = mesh_.faceAreas()[facei];
+            nearest = site{patchi, facei - patches[patchi].start(), area/mag(area)};
+        }
+    }
+
+    if (walls_)
+    {
+        const auto triangle = walls_->nearestLocal(celli, p);
+        if (triangle && triangle->second < nearestDistance)
+        {
+            const wallTriangles::origin& from = walls_->originOf(triangle->first);
+            if (resuspends_[from.patchi])
+            {
+                const label facei = patches[from.patchi].start() + from.facei;
+                const vector& area = mesh_.faceAreas()[facei];
+                nearest = site{from.patchi, from.facei, area/mag(area)};
+            }
+        }
+    }
+    return nearest;
+}
+
+
+void Foam::depositSites::update
+(
+    const volVectorField& U,
+    const volScalarField& rho,
+    const volScalarField& mu
+)
+{
+    const volScalarField* nut =
+        mesh_.foundObject<volScalarField>("nut")
+      ? &mesh_.lookupObject<volScalarField>("nut") : nullptr;
+
+    forAll(resuspends_, patchi)
+    {
+        if (!resuspends_[patchi])
+        {
+            continue;
+        }
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const vectorField n(patch.nf());
+        const vectorField gradU(U.boundaryField()[patchi].snGrad());
+        const scalarField rhoC(rho.boundaryField()[patchi].patchInternalField());
+        const scalarField muC(mu.boundaryField()[patchi].patchInternalField());
+
+        List<flow>& faces = flow_[patchi];
+        faces.setSize(patch.size());
+        forAll(faces, facei)
+        {
+            const vector tangential = gradU[facei] - (n[facei] & gradU[facei])*n[facei];
+            const scalar nutW = nut ? nut->boundaryField()[patchi][facei] : 0;
+            faces[facei] =
+            {
+                (muC[facei] + rhoC[facei]*nutW)*mag(tangential),
+                rhoC[facei],
+                muC[facei]/rhoC[facei]
+            };
+        }
+    }
+}

@@ -1,0 +1,133 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
+#include "resuspensionInput.H"
+#include "wallInteractionEntry.H"
+
+std::optional<Foam::resuspensionSettings> Foam::readResuspension
+(
+    const dictionary& dict,
+    const std::optional<brachDunn::ElasticMaterial>& wall,
+    const std::function<brachDunn::ElasticMaterial()>& particle,
+    const checkedInput::magnitudes& magnitudes
+)
+{
+    using Model = brachDunn::DepositResuspension;
+
+    if (!checkedInput::findDictionary(dict, "resuspension", "{ type ...; ... }"))
+    {
+        return std::nullopt;
+    }
+    const dictionary sub
+    (
+        checkedInput::subDictionary
+        (
+            dict, "resuspension", "{ type ...; ... }", "resuspension"
+        )
+    );
+
+    resuspensionSettings settings;
+    Model& model = settings.model;
+    const word type
+    (
+        checkedInput::readWord
+        (
+            sub, "type", word::null, {"rollingBalance", "rockNRoll"}
+        )
+    );
+    if (type.empty())
+    {
+        checkedInput::fail
+        (
+            sub, "type", "missing", "must be rollingBalance or rockNRoll"
+        );
+    }
+    model.kind =
+        type == "rollingBalance"
+      ? Model::Kind::rollingBalance : Model::Kind::rockNRoll;
+
+    wordList known{"type", "w", "adhesionSpread", "seed"};
+    if (model.kind == Model::Kind::rockNRoll)
+    {
+        known.append(wordList{"rmsRatio", "frequencyPlus"});
+    }
+    else if (!wall)
+    {
+        known.append(wordList{"E", "nu"});
+    }
+    checkedInput::requireKnownKeywords
+    (
+        sub, known, "resuspension of type " + type
+      + (model.kind == Model::Kind::rollingBalance && wall
+        ? std::string(" in an adhesive entry (its E and nu are the wall's)")
+        : std::string())
+    );
+
+    model.w = checkedInput::readNumber(sub, "w");
+    magnitudes.check(sub, "w", model.w, brachDunn::magnitude::surfaceEnergy);
+    settings.seed = checkedInput::readCount(sub, "seed", 1);
+    model.rmsRatio =
+        checkedInput::readNumber(sub, "rmsRatio", model.rmsRatio);
+    model.frequencyPlus =
+        checkedInput::readNumber(sub, "frequencyPlus", model.frequencyPlus);
+
+    if (checkedInput::findDictionary(sub, "adhesionSpread", "{ type ...; }"))
+    {
+        const dictionary spread
+        (
+            checkedInput::subDictionary
+            (
+                sub, "adhesionSpread", "{ type ...; }", "resuspension"
+            )
+        );
+        const word spreadType
+        (
+            checkedInput::readWord
+            (
+                spread, "type", word::null, {"none", "logNormal", "biasi"}
+            )
+        );
+        if (spreadType == "logNormal")
+        {
+            checkedInput::requireKnownKeywords
+            (
+                spread, {"type", "geometricMean", "geometricSpread"},
+                "adhesionSpread of type logNormal"
+            );
+            model.spread = Model::Spread::logNormal;
+            model.logNormal =
+            {
+                checkedInput::readNumber(spread, "geometricMean"),
+                checkedInput::readNumber(spread, "geometricSpread")
+            };
+        }
+        else
+        {
+            if (spreadType.empty())
+            {
+                checkedInput::fail
+                (
+                    spread, "type", "missing",
+                    "must be none, logNormal or biasi"
+                );
+            }
+            checkedInput::requireKnownKeywords
+            (
+                spread, {"type"}, "adhesionSpread of type " + spreadType
+            );
+            model.spread =
+                spreadType == "none" ? Model::Spread::none : Model::Spread::biasi;
+        }
+        if (model.spread == Model::Spread::logNormal)
+        {
+            checkedInput::coreCall(spread, [&]{ model.logNormal.check(); });
+        }
+    }
+
+    if (model.kind == Model::Kind::rollingBalance)
+    {
+        const brachDunn::ElasticMaterial wallMaterial =
+            wall ? *wall : readElasticMaterial(sub, magnitudes);
+        model.contactModulus = brachDunn::contactModulus(particle(), wallMaterial);
+    }
+    checkedInput::coreCall(sub, [&]{ model.check(); });
+    return settings;
+}
