@@ -735,3 +735,12 @@ def test_subcommands_on_files(capsys, stats, tmp_path):
     U.write_text(HEADER % ("vectorField", "U") + "1((0.5 0 -1))\n")
     assert run(capsys, "lastVector", U)[1] == "0.5 0 -1"
     assert run(capsys, "lagrangianValues", U)[1].split() == ["0.5", "0", "-1"]
+
+
+def test_deposit_cost_line():
+    # (median 5.5 s - median 5.0 s)/(1000 deposits x 50 steps) = 10 us
+    line = checks.deposit_cost_line(1000, 50, [5.0, 4.0, 6.0], [5.5, 9.0, 5.0])
+    assert line.startswith("resuspension: 10000 ns per deposit and step")
+    assert "medians 5.00 s without, 5.50 s with" in line
+    with pytest.raises(checks.CheckError):
+        checks.deposit_cost_line(0, 50, [1.0], [1.0])

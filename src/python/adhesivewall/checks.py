@@ -961,6 +961,18 @@ def speedup_line(serial, parallel):
             % (serial, parallel, serial / parallel))
 
 
+def deposit_cost_line(deposits, steps, times_a, times_b):
+    """The resuspension line: the extra time per deposit and step, from the
+    medians of alternating runs without (A) and with (B) resuspension."""
+    if deposits <= 0 or steps <= 0:
+        raise CheckError(f"{deposits} deposits, {steps} steps")
+    time_a, time_b = median(times_a), median(times_b)
+    return ("resuspension: %.0f ns per deposit and step (medians %.2f s "
+            "without, %.2f s with; %d deposits, %d steps)"
+            % ((time_b - time_a) / (deposits * steps) * 1e9, time_a, time_b,
+               deposits, steps))
+
+
 def instructions_lines(path, hits):
     """The instruction counts of callgrind runs ('box count' lines, the
     first 'standard') and, for the others, the instructions per wall impact
@@ -1362,6 +1374,14 @@ def _bench_entries(*pairs):
 def _bench_speedup(serial, parallel):
     """The parallel speedup line."""
     print(speedup_line(number(serial), number(parallel)))
+
+
+@command("benchResuspension", "DEPOSITS STEPS 'TIMES_A' 'TIMES_B'", 4, 4)
+def _bench_resuspension(deposits, steps, times_a, times_b):
+    """The resuspension cost line."""
+    print(deposit_cost_line(int(deposits), int(steps),
+                            [number(t) for t in times_a.split()],
+                            [number(t) for t in times_b.split()]))
 
 
 @command("benchInstructions", "FILE HITS", 2, 2)
