@@ -17,18 +17,11 @@ import pytest
 
 from adhesivewall import curves, foam
 from adhesivewall.tutorials import tube_diffusion as tube
+from ks import ks_bound, ks_distance
 
 N = 20000
 R = 0.25e-3
-KS_BOUND = 1.95 / math.sqrt(N)      # P(D_n > bound) = 0.001
-
-
-def ks_distance(samples, cdf):
-    """sup |F_n(x) - F(x)| of the samples against the CDF."""
-    xs = sorted(samples)
-    n = len(xs)
-    return max(max((i + 1) / n - cdf(x), cdf(x) - i / n)
-               for i, x in enumerate(xs))
+KS_BOUND = ks_bound(N)            # P(D_n > bound) = 0.001
 
 
 def radii(points):

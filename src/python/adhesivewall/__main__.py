@@ -3,7 +3,8 @@
 
 Commands:
   bendDeposition [CASE]      post-processing of the tutorials (their
-  fibreFilter [CASE]         Allrun.post): results.csv, log.table, plots
+  channelResuspension [CASE] Allrun.post): results.csv, log.table, plots
+  fibreFilter [CASE]
   microsphereImpact [CASE]
   tubeDiffusion [CASE]
 
@@ -27,6 +28,10 @@ Commands:
                              (N speeds per diameter of figure5.csv)
   tubePositions [CASE]       tubeDiffusion's positions files (flux-weighted
                              over the inlet, one per injector)
+  channelPositions [CASE]    channelResuspension's positions files (above
+                             the floor, one per injector)
+  channelTop [CASE]          channelResuspension's top wall speed at the
+                             latest time (every processor folder)
   fibreSpectrum CASE VARIANT fibreFilter's spectrum sub-case: its injectors
                              and positions (VARIANT full or reduced)
 """
@@ -74,6 +79,14 @@ def main(argv=None):
         from .tutorials import fibre_filter
         fibre_filter.write_spectrum(*arguments)
         return 0
+    if command == "channelPositions" and len(arguments) <= 1:
+        from .tutorials import channel_resuspension
+        channel_resuspension.write_positions(*arguments)
+        return 0
+    if command == "channelTop" and len(arguments) <= 1:
+        from .tutorials import channel_resuspension
+        channel_resuspension.set_top(*arguments)
+        return 0
     if command == "tubePositions" and len(arguments) <= 1:
         from .tutorials import tube_diffusion
         tube_diffusion.write_positions(*arguments)
@@ -91,6 +104,7 @@ def main(argv=None):
 
 TUTORIALS = {
     "bendDeposition": "bend_deposition",
+    "channelResuspension": "channel_resuspension",
     "fibreFilter": "fibre_filter",
     "microsphereImpact": "microsphere_impact",
     "tubeDiffusion": "tube_diffusion",

@@ -267,3 +267,26 @@ def fixed_size_injectors(case=".",
                    ["value"]),
              str(entry["positionsFile"]))
             for name, entry in models.items()]
+
+
+def written_header(tutorial, foam_class, name, comment):
+    """The header of a file a tutorial's script writes under constant/: the
+    banner naming the tutorial and the licence, FoamFile, and the comment
+    lines given (each prefixed with '// ')."""
+    lines = [
+        "/*--------------------------------*- C++ -*----------------------------------*\\",
+        f"  adhesiveWallInteraction tutorial: {tutorial}",
+        "  SPDX-License-Identifier: GPL-3.0-or-later",
+        "\\*---------------------------------------------------------------------------*/",
+        "FoamFile",
+        "{",
+        "    version     2.0;",
+        "    format      ascii;",
+        f"    class       {foam_class};",
+        '    location    "constant";',
+        f"    object      {name};",
+        "}",
+        "// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //",
+        "",
+    ]
+    return "\n".join(lines + ["// " + c for c in comment]) + "\n"

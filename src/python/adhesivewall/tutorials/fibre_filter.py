@@ -142,23 +142,10 @@ def band_positions(band, parcels):
     return inner, sorted([-y for y in side] + side)
 
 
-HEADER = """\
-/*--------------------------------*- C++ -*----------------------------------*\\
-  adhesiveWallInteraction tutorial: fibreFilter
-  SPDX-License-Identifier: GPL-3.0-or-later
-\\*---------------------------------------------------------------------------*/
-FoamFile
-{{
-    version     2.0;
-    format      ascii;
-    class       {foamClass};
-    location    "constant";
-    object      {name};
-}}
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-// Written by fibre_filter.py spectrum (Allrun) from constant/spectrum
-"""
+def header(foam_class, name):
+    return foam.written_header(
+        "fibreFilter", foam_class, name,
+        ["Written by fibre_filter.py spectrum (Allrun) from constant/spectrum"])
 
 
 def injector_name(d):
@@ -176,7 +163,7 @@ def write_spectrum(folder, variant):
                                                    expand=False)]
     captures = float(foam.value(path, "captures/" + variant, expand=False))
     plan = spectrum_plan(fibre, fibre.U0, diameters, captures)
-    lines = [HEADER.format(foamClass="dictionary", name="injectors"),
+    lines = [header("dictionary", "injectors"),
              "// Per diameter the inner half of its band (injectorID k) and "
              "the outer half",
              "// (injectorID %d + k), constant/positions.<name>; what they "
@@ -197,7 +184,7 @@ def write_spectrum(folder, variant):
                 'sizeDistribution { type fixedValue; fixedValueDistribution '
                 '{ value %.6g; } } }' % (name, suffix, ident, positions, d))
             with open(os.path.join(folder, "constant", positions), "w") as f:
-                f.write(HEADER.format(foamClass="vectorField", name=positions))
+                f.write(header("vectorField", positions))
                 f.write("// %s: %d parcels %.6g m apart, band %.6g m\n\n" % (
                     name + suffix, len(ys), 2 * band / n, band))
                 f.write("%d\n(\n" % len(ys))

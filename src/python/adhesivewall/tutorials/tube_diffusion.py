@@ -63,33 +63,15 @@ def flux_weighted_disc(n, R, seed, r_max=None):
     return points
 
 
-POSITIONS_HEADER = """\
-/*--------------------------------*- C++ -*----------------------------------*\\
-  adhesiveWallInteraction tutorial: tubeDiffusion
-  SPDX-License-Identifier: GPL-3.0-or-later
-\\*---------------------------------------------------------------------------*/
-FoamFile
-{{
-    version     2.0;
-    format      ascii;
-    class       vectorField;
-    location    "constant";
-    object      {name};
-}}
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-// {n} parcels at x = 0, flux-weighted over the tube's section
-// (r < {r_max:.9g}, the wall polygon's inscribed circle), seed {seed}:
-// written by tube_diffusion.write_positions (Allrun)
-
-"""
 
 
 def positions_text(name, points, seed, r_max, x=0.0):
     rows = ["(%.9g %.12g %.12g)" % (x, y, z) for y, z in points]
-    return POSITIONS_HEADER.format(name=name, n=len(points), r_max=r_max,
-                                   seed=seed) \
-        + "%d\n(\n%s\n)\n" % (len(rows), "\n".join(rows))
+    return foam.written_header("tubeDiffusion", "vectorField", name, [
+        f"{len(points)} parcels at x = 0, flux-weighted over the tube's section",
+        f"(r < {r_max:.9g}, the wall polygon's inscribed circle), seed {seed}:",
+        "written by tube_diffusion.write_positions (Allrun)"]) \
+        + "\n%d\n(\n%s\n)\n" % (len(rows), "\n".join(rows))
 
 
 # --- The case ----------------------------------------------------------------
