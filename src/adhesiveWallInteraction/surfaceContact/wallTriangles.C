@@ -276,6 +276,7 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
     // The candidates of the planes the swept sphere reaches
     static thread_local std::vector<int> reached;
     reached.clear();
+    std::optional<brachDunn::Contact> onPlane;
     const brachDunn::Vector3 a(toCore(A)), b(toCore(B));
     for (int k = cellPlaneStart_[celli]; k < cellPlaneStart_[celli + 1]; ++k)
     {
@@ -288,6 +289,27 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
             {
                 continue;
             }
+            // From beyond reach of the plane, the sphere meets it first
+            // where its centre is r from it: when the foot of the centre
+            // there lies in one of the plane's triangles, that is the first
+            // contact with any of them (none is nearer than their plane),
+            // found without sweeping each (most contacts with a flat wall)
+            if (std::abs(hA) > r)
+            {
+                const double side = hA > 0 ? 1 : -1;
+                const double fraction = (side*hA - r)/(side*(hA - hB));
+                const brachDunn::Vector3 centre = a + fraction*(b - a);
+                const brachDunn::Vector3 foot =
+                    centre - (dot(p.normal, centre) - p.offset)*p.normal;
+                if (const int t = containing(p, foot); t >= 0)
+                {
+                    if (!onPlane || fraction < onPlane->fraction)
+                    {
+                        onPlane = brachDunn::Contact{fraction, foot, t};
+                    }
+                    continue;
+                }
+            }
         }
         reached.insert
         (
@@ -298,12 +320,40 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
     }
     if (reached.empty())
     {
-        return std::nullopt;
+        return onPlane;
     }
-    return brachDunn::firstContact
+    const std::optional<brachDunn::Contact> swept = brachDunn::firstContact
     (
         triangles_, reached.data(), reached.data() + reached.size(), a, b, r
     );
+    return
+        onPlane && (!swept || onPlane->fraction <= swept->fraction)
+      ? onPlane : swept;
+}
+
+
+int Foam::wallTriangles::containing
+(
+    const plane& p,
+    const brachDunn::Vector3& x
+) const
+{
+    for (int i = p.first; i < p.last; ++i)
+    {
+        const brachDunn::PreparedTriangle& t = triangles_[cellTriangles_[i]];
+        // Inside or on the edges: on the inner side of each edge (the
+        // normal is that of the vertices' order, prepare())
+        bool inside = true;
+        for (int e = 0; inside && e < 3; ++e)
+        {
+            inside = dot(cross(t.edge[e], x - t.vertex[e]), t.normal) >= 0;
+        }
+        if (inside)
+        {
+            return cellTriangles_[i];
+        }
+    }
+    return -1;
 }
 
 

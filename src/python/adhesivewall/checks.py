@@ -566,7 +566,8 @@ def expected_grade_efficiency(case=".", start_time="0",
     """Per size class, what gradeEfficiency.dat must hold at the last time,
     counted independently of the model's counters: injected from the
     injectors (constant/injectors: positions x nParticle, d, rho0),
-    captured and escaped from the impact records (impacts.csv), airborne
+    captured (net of the resuspended) and escaped from the impact records
+    (impacts.csv), airborne
     from the cloud's lagrangian files at the last written time (active
     parcels), removed as the rest. {(dMin, dMax): {quantity: [parcels,
     particles, mass]}}, the classes those of the file."""
@@ -596,10 +597,12 @@ def expected_grade_efficiency(case=".", start_time="0",
         add("injected", d, number(injector["nParticle"]), positions)
     records = tables.read(os.path.join(
         statistics.output_folder(case, cloud, start_time), "impacts.csv"))
-    for outcome, quantity in (("capture", "captured"), ("escape", "escaped")):
+    for outcome, quantity, sign in (("capture", "captured", 1),
+                                    ("escape", "escaped", 1),
+                                    ("resuspension", "captured", -1)):
         for d, n in zip(*(records.where(outcome=outcome)[c]
                           for c in ("diameter", "nParticle"))):
-            add(quantity, d, n)
+            add(quantity, d, n, sign)
     time = foam.latest_time(case)
     folder = os.path.join(case, time, "lagrangian", cloud)
     if foam.parcel_count(case, time, cloud):
