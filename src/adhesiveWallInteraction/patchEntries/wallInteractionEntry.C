@@ -174,9 +174,9 @@ Foam::wallInteractionEntry::wallInteractionEntry
     mu_(0)
 {
     // The entries with coefficients take only their own keywords, so that a
-    // misspelt one is not ignored; stick, escape and none read nothing
-    // else, and may keep an adhesive entry's coefficients while cases are
-    // compared
+    // misspelt one is not ignored; stick (but its resuspension), escape and
+    // none read nothing, and may keep an adhesive or rebound entry's
+    // coefficients while cases are compared
     if (type_ == interaction::rebound)
     {
         readRebound(dict);
@@ -185,9 +185,30 @@ Foam::wallInteractionEntry::wallInteractionEntry
     {
         readAdhesive(dict, particle, magnitudes);
     }
-    else if (type_ == interaction::stick)
+    else
     {
-        resuspension_ = readResuspension(dict, std::nullopt, particle, magnitudes);
+        // Another type's coefficients may stay; any other keyword (a
+        // misspelt resuspension) is an error
+        wordList known
+        {
+            "type", "patchType", "e", "mu", "E", "nu", "restitution",
+            "adhesion", "friction", "momentCoeff", "minReboundSpeed"
+        };
+        if (type_ == interaction::stick)
+        {
+            known.append("resuspension");
+        }
+        checkedInput::requireKnownKeywords
+        (
+            dict, known,
+            "patch entries of type " + typeName()
+          + " (which may keep the keywords of other types)"
+        );
+        if (type_ == interaction::stick)
+        {
+            resuspension_ =
+                readResuspension(dict, std::nullopt, particle, magnitudes);
+        }
     }
 }
 
