@@ -770,7 +770,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::resuspend()
             );
         if (leaves)
         {
-            release(p, *s, Foam::sqrt(flow.tauW/flow.rho));
+            release(p, position, *s, Foam::sqrt(flow.tauW/flow.rho));
         }
     }
     capturedThisStep_.clear();
@@ -781,6 +781,7 @@ template<class CloudType>
 void Foam::AdhesiveWallInteraction<CloudType>::release
 (
     typename CloudType::parcelType& p,
+    const point& position,
     const depositSites::site& s,
     const scalar frictionVelocity
 )
@@ -808,7 +809,6 @@ void Foam::AdhesiveWallInteraction<CloudType>::release
     }
     if (records_ && records_->active())
     {
-        const point position = compat::position(p, this->owner().mesh());
         records_->add
         ({
             this->owner().mesh().time().value(),
