@@ -42,6 +42,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::setUp()
         mesh, model_->wallPatches(), 0.5*maxDiameter_
     );
     model_->useWallTriangles(walls_);
+    threeD_ = mesh.nGeometricD() == 3;
     Info<< "    " << this->modelName() << ": contact at the surface with "
         << returnReduce(walls_->size() - walls_->nRemote(), sumOp<label>())
         << " wall triangles of " << model_->wallPatches().size()
@@ -52,21 +53,18 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::setUp()
 
 
 template<class CloudType>
-void Foam::AdhesiveWallSurfaceContact<CloudType>::checkDiameter
+void Foam::AdhesiveWallSurfaceContact<CloudType>::tooLarge
 (
     const typename CloudType::parcelType& p
 ) const
 {
-    if (p.d() > maxDiameter_)
-    {
-        FatalErrorInFunction
-            << "Cloud function " << this->modelName() << " of cloud "
-            << this->owner().name() << ": a parcel of diameter " << p.d()
-            << " m at " << compat::position(p, this->owner().mesh())
-            << " is larger than maxDiameter " << maxDiameter_
-            << " m, so walls it touches could be missed. Set maxDiameter to"
-            << " the largest diameter of the parcels" << exit(FatalError);
-    }
+    FatalErrorInFunction
+        << "Cloud function " << this->modelName() << " of cloud "
+        << this->owner().name() << ": a parcel of diameter " << p.d()
+        << " m at " << compat::position(p, this->owner().mesh())
+        << " is larger than maxDiameter " << maxDiameter_
+        << " m, so walls it touches could be missed. Set maxDiameter to"
+        << " the largest diameter of the parcels" << exit(FatalError);
 }
 
 
@@ -121,7 +119,8 @@ Foam::AdhesiveWallSurfaceContact<CloudType>::AdhesiveWallSurfaceContact
     CloudFunctionObject<CloudType>(other),
     maxDiameter_(other.maxDiameter_),
     walls_(other.walls_),
-    model_(other.model_)
+    model_(other.model_),
+    threeD_(other.threeD_)
 {}
 
 
@@ -149,6 +148,26 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::postMove
         return;
     }
     checkDiameter(p);
+
+    // A sub-step moves the centre at most maxCo times the cell's length
+    // scale (KinematicParcel::move; in 3-D, where no deviation from the
+    // mesh's centre plane is added): from farther than that and the radius
+    // from every wall near the cell, the sphere touches none, and the end
+    // of the sub-step need not be found (most sub-steps in a wall cell)
+    if
+    (
+        threeD_
+     && walls_->apart
+        (
+            p.cell(),
+            position0,
+            (0.5*p.d() + this->owner().solution().maxCo()
+           *this->owner().cellLengthScale()[p.cell()])*(1 + 1e-9)
+        )
+    )
+    {
+        return;
+    }
 
     const point end = compat::position(p, this->owner().mesh());
     const std::optional<brachDunn::Contact> contact =

@@ -191,8 +191,13 @@ void Foam::wallTriangles::addCandidates
 }
 
 
-void Foam::wallTriangles::groupByPlane(const scalar reach)
+void Foam::wallTriangles::groupByPlane
+(
+    const polyMesh& mesh,
+    const scalar reach
+)
 {
+    const vectorField& cellCentres = mesh.cellCentres();
     const label nCells = label(cellStart_.size()) - 1;
     cellPlaneStart_.assign(nCells + 1, 0);
     planes_.clear();
@@ -223,12 +228,39 @@ void Foam::wallTriangles::groupByPlane(const scalar reach)
             if (planeOf[i - begin] < 0)
             {
                 planeOf[i - begin] = int(planes_.size());
-                planes_.push_back({t.normal, offset, t.flat, 0, 0});
+                planes_.push_back
+                (
+                    {t.normal, offset, t.flat, 0, 0, t.lower, t.upper}
+                );
             }
+            // The plane's box holds its triangles' boxes
+            plane& p = planes_[planeOf[i - begin]];
+            p.lower =
+            {
+                std::min(p.lower.x, t.lower.x),
+                std::min(p.lower.y, t.lower.y),
+                std::min(p.lower.z, t.lower.z)
+            };
+            p.upper =
+            {
+                std::max(p.upper.x, t.upper.x),
+                std::max(p.upper.y, t.upper.y),
+                std::max(p.upper.z, t.upper.z)
+            };
         }
 
-        // The cell's triangles in the order of their planes
+        // The cell's triangles in the order of their planes, in a plane
+        // the nearest to the cell's centre first (the cell's own faces: a
+        // contact's foot is most often in one of them, containing())
         sorted.clear();
+        const brachDunn::Vector3 centre(toCore(cellCentres[celli]));
+        const auto distSqr = [&](const int t)
+        {
+            const brachDunn::PreparedTriangle& p = triangles_[t];
+            const brachDunn::Vector3 c =
+                (1.0/3.0)*(p.vertex[0] + p.vertex[1] + p.vertex[2]) - centre;
+            return dot(c, c);
+        };
         for (std::size_t k = cellPlanes; k < planes_.size(); ++k)
         {
             planes_[k].first = begin + int(sorted.size());
@@ -240,6 +272,12 @@ void Foam::wallTriangles::groupByPlane(const scalar reach)
                 }
             }
             planes_[k].last = begin + int(sorted.size());
+            std::stable_sort
+            (
+                sorted.begin() + (planes_[k].first - begin),
+                sorted.end(),
+                [&](const int s, const int t) { return distSqr(s) < distSqr(t); }
+            );
         }
         std::copy(sorted.begin(), sorted.end(), cellTriangles_.begin() + begin);
         cellPlaneStart_[celli + 1] = int(planes_.size());
@@ -259,11 +297,41 @@ Foam::wallTriangles::wallTriangles
     addLocal(mesh, patches);
     addRemote(mesh, reach);
     addCandidates(mesh, reach);
-    groupByPlane(reach);
+    groupByPlane(mesh, reach);
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::wallTriangles::apart
+(
+    const label celli,
+    const point& p,
+    const scalar distance
+) const
+{
+    const brachDunn::Vector3 a(toCore(p));
+    for (int k = cellPlaneStart_[celli]; k < cellPlaneStart_[celli + 1]; ++k)
+    {
+        // The plane first: it decides for most points near a flat wall
+        const plane& q = planes_[k];
+        if (q.flat && std::abs(dot(q.normal, a) - q.offset) > distance)
+        {
+            continue;
+        }
+        if
+        (
+            a.x >= q.lower.x - distance && a.x <= q.upper.x + distance
+         && a.y >= q.lower.y - distance && a.y <= q.upper.y + distance
+         && a.z >= q.lower.z - distance && a.z <= q.upper.z + distance
+        )
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
 
 std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
 (
@@ -273,12 +341,16 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
     const scalar r
 ) const
 {
-    // The candidates of the planes the swept sphere reaches
-    static thread_local std::vector<int> reached;
-    reached.clear();
+    // The planes the swept sphere reaches, whose candidates are swept
+    constexpr int capacity = 32;
+    int sweptPlanes[capacity];
+    int nSwept = 0;
+    bool sweepAll = false;
     std::optional<brachDunn::Contact> onPlane;
     const brachDunn::Vector3 a(toCore(A)), b(toCore(B));
-    for (int k = cellPlaneStart_[celli]; k < cellPlaneStart_[celli + 1]; ++k)
+    const int firstPlane = cellPlaneStart_[celli];
+    const int endPlane = cellPlaneStart_[celli + 1];
+    for (int k = firstPlane; k < endPlane; ++k)
     {
         const plane& p = planes_[k];
         if (p.flat)
@@ -286,6 +358,18 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
             const double hA = dot(p.normal, a) - p.offset;
             const double hB = dot(p.normal, b) - p.offset;
             if ((hA > r && hB > r) || (hA < -r && hB < -r))
+            {
+                continue;
+            }
+            // Leaving the plane from contact (a rebound from it: at most
+            // 1e-9 r into it at the start, farther from it at the end): no
+            // contact with its triangles, none swept (a contact within the
+            // sub-step would need the sphere 1e-9 r deep at a triangle's edge)
+            if
+            (
+                std::abs(hA) >= (1 - 1e-9)*r
+             && (hA > 0 ? hB - hA : hA - hB) > 0
+            )
             {
                 continue;
             }
@@ -311,16 +395,47 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
                 }
             }
         }
+        if (nSwept < capacity)
+        {
+            sweptPlanes[nSwept] = k;
+        }
+        else
+        {
+            sweepAll = true;
+        }
+        ++nSwept;
+    }
+    if (nSwept == 0)
+    {
+        return onPlane;
+    }
+
+    // The candidates of the planes reached (of all, in a cell of more
+    // planes reached than the capacity)
+    static thread_local std::vector<int> reached;
+    reached.clear();
+    const auto addPlane = [&](const plane& p)
+    {
         reached.insert
         (
             reached.end(),
             cellTriangles_.begin() + p.first,
             cellTriangles_.begin() + p.last
         );
-    }
-    if (reached.empty())
+    };
+    if (sweepAll)
     {
-        return onPlane;
+        for (int k = firstPlane; k < endPlane; ++k)
+        {
+            addPlane(planes_[k]);
+        }
+    }
+    else
+    {
+        for (int i = 0; i < nSwept; ++i)
+        {
+            addPlane(planes_[sweptPlanes[i]]);
+        }
     }
     const std::optional<brachDunn::Contact> swept = brachDunn::firstContact
     (
@@ -341,6 +456,24 @@ int Foam::wallTriangles::containing
     for (int i = p.first; i < p.last; ++i)
     {
         const brachDunn::PreparedTriangle& t = triangles_[cellTriangles_[i]];
+        // Outside its box (grown by a little for the point's rounding off
+        // the plane): not in it; a triangle wrongly passed over here is
+        // swept instead, with the same result
+        const double tol =
+            1e-9
+           *(
+                t.upper.x - t.lower.x + t.upper.y - t.lower.y
+              + t.upper.z - t.lower.z
+            );
+        if
+        (
+            x.x < t.lower.x - tol || x.x > t.upper.x + tol
+         || x.y < t.lower.y - tol || x.y > t.upper.y + tol
+         || x.z < t.lower.z - tol || x.z > t.upper.z + tol
+        )
+        {
+            continue;
+        }
         // Inside or on the edges: on the inner side of each edge (the
         // normal is that of the vertices' order, prepare())
         bool inside = true;
