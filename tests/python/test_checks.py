@@ -667,6 +667,12 @@ def test_bench_lines(tmp_path):
     counts.write_text("adhesive 1250000\n")
     with pytest.raises(CheckError):
         checks.instructions_lines(counts, 500)
+    # 1.21e10 / 1.1e10 = 1.1 exactly
+    assert checks.instruction_ratio_line("box", 1.1e10, 1.21e10, 5) == (
+        "box: instructions in 5 steps 1.1000e+10 and 1.2100e+10, ratio "
+        "1.1000")
+    with pytest.raises(CheckError):
+        checks.instruction_ratio_line("box", 0, 1.21e10, 5)
 
 
 #------------------------------------------------------------------------------

@@ -1003,6 +1003,15 @@ def instructions_lines(path, hits):
     return lines
 
 
+def instruction_ratio_line(name, count_a, count_b, steps):
+    """The line of two callgrind counts of the same case and their ratio
+    B/A (to 4 decimals)."""
+    if not (count_a > 0 and count_b > 0):
+        raise CheckError(f"counts {count_a}, {count_b}: not both positive")
+    return "%s: instructions in %d steps %.4e and %.4e, ratio %.4f" % (
+        name, steps, count_a, count_b, count_b / count_a)
+
+
 #------------------------------------------------------------------------------
 # The subcommands
 
@@ -1391,6 +1400,15 @@ def _bench_resuspension(deposits, steps, times_a, times_b):
 def _bench_instructions(path, hits):
     """The instruction-count lines."""
     print("\n".join(instructions_lines(path, int(number(hits)))))
+
+
+@command("benchInstructionRatio", "NAME COUNT_A COUNT_B STEPS", 4, 4)
+def _bench_instruction_ratio(name, count_a, count_b, steps):
+    """The line of two callgrind counts (commas allowed) and their
+    ratio."""
+    print(instruction_ratio_line(name, number(count_a.replace(",", "")),
+                                 number(count_b.replace(",", "")),
+                                 int(steps)))
 
 
 def usage():
