@@ -341,16 +341,12 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
     const scalar r
 ) const
 {
-    // The planes the swept sphere reaches, whose candidates are swept
-    constexpr int capacity = 32;
-    int sweptPlanes[capacity];
-    int nSwept = 0;
-    bool sweepAll = false;
+    // The candidates of the planes whose triangles are swept (the buffer
+    // taken only when one is: most sub-steps need none)
+    std::vector<int>* reached = nullptr;
     std::optional<brachDunn::Contact> onPlane;
     const brachDunn::Vector3 a(toCore(A)), b(toCore(B));
-    const int firstPlane = cellPlaneStart_[celli];
-    const int endPlane = cellPlaneStart_[celli + 1];
-    for (int k = firstPlane; k < endPlane; ++k)
+    for (int k = cellPlaneStart_[celli]; k < cellPlaneStart_[celli + 1]; ++k)
     {
         const plane& p = planes_[k];
         if (p.flat)
@@ -361,10 +357,10 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
             {
                 continue;
             }
-            // Leaving the plane from contact (a rebound from it: at most
-            // 1e-9 r into it at the start, farther from it at the end): no
-            // contact with its triangles, none swept (a contact within the
-            // sub-step would need the sphere 1e-9 r deep at a triangle's edge)
+            // Leaving a plane it starts in contact with (a rebound from it:
+            // within 1e-9 r of touching at the start, farther at the end):
+            // no contact with the plane's triangles, none swept (only a
+            // sphere still that deep at a triangle's edge could touch one)
             if
             (
                 std::abs(hA) >= (1 - 1e-9)*r
@@ -395,51 +391,27 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
                 }
             }
         }
-        if (nSwept < capacity)
+        if (!reached)
         {
-            sweptPlanes[nSwept] = k;
+            static thread_local std::vector<int> buffer;
+            reached = &buffer;
+            reached->clear();
         }
-        else
-        {
-            sweepAll = true;
-        }
-        ++nSwept;
-    }
-    if (nSwept == 0)
-    {
-        return onPlane;
-    }
-
-    // The candidates of the planes reached (of all, in a cell of more
-    // planes reached than the capacity)
-    static thread_local std::vector<int> reached;
-    reached.clear();
-    const auto addPlane = [&](const plane& p)
-    {
-        reached.insert
+        reached->insert
         (
-            reached.end(),
+            reached->end(),
             cellTriangles_.begin() + p.first,
             cellTriangles_.begin() + p.last
         );
-    };
-    if (sweepAll)
-    {
-        for (int k = firstPlane; k < endPlane; ++k)
-        {
-            addPlane(planes_[k]);
-        }
     }
-    else
+    if (!reached)
     {
-        for (int i = 0; i < nSwept; ++i)
-        {
-            addPlane(planes_[sweptPlanes[i]]);
-        }
+        return onPlane;
     }
     const std::optional<brachDunn::Contact> swept = brachDunn::firstContact
     (
-        triangles_, reached.data(), reached.data() + reached.size(), a, b, r
+        triangles_, reached->data(), reached->data() + reached->size(),
+        a, b, r
     );
     return
         onPlane && (!swept || onPlane->fraction <= swept->fraction)
