@@ -2,6 +2,7 @@
 
 #include "AdhesiveWallSurfaceContact.H"
 #include "checkedInput.H"
+#include "meshTools.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -53,7 +54,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::setUp()
 
 
 template<class CloudType>
-void Foam::AdhesiveWallSurfaceContact<CloudType>::tooLarge
+void Foam::AdhesiveWallSurfaceContact<CloudType>::stopTooLarge
 (
     const typename CloudType::parcelType& p
 ) const
@@ -150,21 +151,22 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::postMove
     checkDiameter(p);
 
     // A sub-step moves the centre at most maxCo times the cell's length
-    // scale (KinematicParcel::move; in 3-D, where no deviation from the
-    // mesh's centre plane is added): from farther than that and the radius
-    // from every wall near the cell, the sphere touches none, and the end
-    // of the sub-step need not be found (most sub-steps in a wall cell)
-    if
-    (
-        threeD_
-     && walls_->apart
-        (
-            p.cell(),
-            position0,
-            (0.5*p.d() + this->owner().solution().maxCo()
-           *this->owner().cellLengthScale()[p.cell()])*(1 + 1e-9)
-        )
-    )
+    // scale, and in 2-D by the start's deviation from the mesh's centre
+    // plane besides (KinematicParcel::move): from farther than that and
+    // the radius from every wall near the cell, the sphere touches none,
+    // and the end of the sub-step need not be found (most sub-steps in a
+    // wall cell). The margin of 1e-9 covers the rounding of the positions.
+    scalar reach =
+        0.5*p.d()
+      + this->owner().solution().maxCo()
+       *this->owner().cellLengthScale()[p.cell()];
+    if (!threeD_)
+    {
+        point centred = position0;
+        meshTools::constrainToMeshCentre(this->owner().mesh(), centred);
+        reach += mag(position0 - centred);
+    }
+    if (walls_->apart(p.cell(), position0, reach*(1 + 1e-9)))
     {
         return;
     }

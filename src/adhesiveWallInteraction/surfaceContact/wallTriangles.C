@@ -209,16 +209,25 @@ void Foam::wallTriangles::groupByPlane
         std::vector<int> planeOf(end - begin, -1);
         for (int i = begin; i < end; ++i)
         {
-            const brachDunn::PreparedTriangle& t = triangles_[cellTriangles_[i]];
+            const brachDunn::PreparedTriangle& t =
+                triangles_[cellTriangles_[i]];
             const double offset = dot(t.normal, t.vertex[0]);
             for (std::size_t k = cellPlanes; t.flat && k < planes_.size(); ++k)
             {
+                // Of the plane: facing its way, every vertex within 1e-9 of
+                // the reach of it (the plane tests are exact to that)
                 const plane& p = planes_[k];
+                const auto inPlane = [&](const brachDunn::Vector3& v)
+                {
+                    return std::abs(dot(p.normal, v) - p.offset) <= 1e-9*reach;
+                };
                 if
                 (
                     p.flat
-                 && dot(p.normal, t.normal) >= 1 - 1e-12
-                 && std::abs(p.offset - offset) <= 1e-12*reach
+                 && dot(p.normal, t.normal) > 0
+                 && inPlane(t.vertex[0])
+                 && inPlane(t.vertex[1])
+                 && inPlane(t.vertex[2])
                 )
                 {
                     planeOf[i - begin] = int(k);
@@ -256,9 +265,10 @@ void Foam::wallTriangles::groupByPlane
         const brachDunn::Vector3 centre(toCore(cellCentres[celli]));
         const auto distSqr = [&](const int t)
         {
-            const brachDunn::PreparedTriangle& p = triangles_[t];
+            const brachDunn::PreparedTriangle& tri = triangles_[t];
             const brachDunn::Vector3 c =
-                (1.0/3.0)*(p.vertex[0] + p.vertex[1] + p.vertex[2]) - centre;
+                (1.0/3.0)*(tri.vertex[0] + tri.vertex[1] + tri.vertex[2])
+              - centre;
             return dot(c, c);
         };
         for (std::size_t k = cellPlanes; k < planes_.size(); ++k)
@@ -276,7 +286,10 @@ void Foam::wallTriangles::groupByPlane
             (
                 sorted.begin() + (planes_[k].first - begin),
                 sorted.end(),
-                [&](const int s, const int t) { return distSqr(s) < distSqr(t); }
+                [&](const int s, const int t)
+                {
+                    return distSqr(s) < distSqr(t);
+                }
             );
         }
         std::copy(sorted.begin(), sorted.end(), cellTriangles_.begin() + begin);
@@ -357,15 +370,12 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
             {
                 continue;
             }
-            // Leaving a plane it starts in contact with (a rebound from it:
-            // within 1e-9 r of touching at the start, farther at the end):
-            // no contact with the plane's triangles, none swept (only a
-            // sphere still that deep at a triangle's edge could touch one)
-            if
-            (
-                std::abs(hA) >= (1 - 1e-9)*r
-             && (hA > 0 ? hB - hA : hA - hB) > 0
-            )
+            // Leaving a plane it starts in contact with (a rebound from it)
+            // or sliding along it: no contact with its triangles (only a
+            // sphere deeper than 1e-9 r could touch one at an edge); swept
+            // only with other planes, where the core needs them as walls
+            // the sphere overlaps (the edges they share with those)
+            if (leaving(hA, hB, r))
             {
                 continue;
             }
@@ -408,6 +418,26 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
     {
         return onPlane;
     }
+    for (int k = cellPlaneStart_[celli]; k < cellPlaneStart_[celli + 1]; ++k)
+    {
+        const plane& p = planes_[k];
+        if
+        (
+            p.flat
+         && leaving
+            (
+                dot(p.normal, a) - p.offset, dot(p.normal, b) - p.offset, r
+            )
+        )
+        {
+            reached->insert
+            (
+                reached->end(),
+                cellTriangles_.begin() + p.first,
+                cellTriangles_.begin() + p.last
+            );
+        }
+    }
     const std::optional<brachDunn::Contact> swept = brachDunn::firstContact
     (
         triangles_, reached->data(), reached->data() + reached->size(),
@@ -416,6 +446,20 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
     return
         onPlane && (!swept || onPlane->fraction <= swept->fraction)
       ? onPlane : swept;
+}
+
+
+bool Foam::wallTriangles::leaving
+(
+    const double hA,
+    const double hB,
+    const double r
+)
+{
+    return
+        std::abs(hA) >= (1 - 1e-9)*r
+     && std::abs(hA) <= r
+     && (hA > 0 ? hB - hA : hA - hB) >= 0;
 }
 
 

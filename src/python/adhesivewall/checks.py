@@ -1408,7 +1408,7 @@ def _bench_instruction_ratio(name, count_a, count_b, steps):
     ratio."""
     print(instruction_ratio_line(name, number(count_a.replace(",", "")),
                                  number(count_b.replace(",", "")),
-                                 int(steps)))
+                                 int(number(steps, "STEPS"))))
 
 
 def usage():
