@@ -44,6 +44,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::setUp()
     );
     model_->useWallTriangles(walls_);
     threeD_ = mesh.nGeometricD() == 3;
+    positions_.emplace(mesh);
     Info<< "    " << this->modelName() << ": contact at the surface with "
         << returnReduce(walls_->size() - walls_->nRemote(), sumOp<label>())
         << " wall triangles of " << model_->wallPatches().size()
@@ -66,6 +67,26 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::stopTooLarge
         << " is larger than maxDiameter " << maxDiameter_
         << " m, so walls it touches could be missed. Set maxDiameter to"
         << " the largest diameter of the parcels" << exit(FatalError);
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallSurfaceContact<CloudType>::checkPosition
+(
+    const typename CloudType::parcelType& p,
+    const point& end
+) const
+{
+    const point exact = compat::position(p, this->owner().mesh());
+    if (end.x() != exact.x() || end.y() != exact.y() || end.z() != exact.z())
+    {
+        FatalErrorInFunction
+            << "Cloud function " << this->modelName() << " of cloud "
+            << this->owner().name() << ": the position from the parcel's tet "
+            << setprecision(17) << end << " differs from OpenFOAM's " << exact
+            << " (cell " << p.cell() << ", face " << p.tetFace()
+            << ", tet point " << p.tetPt() << ")" << exit(FatalError);
+    }
 }
 
 
@@ -121,7 +142,8 @@ Foam::AdhesiveWallSurfaceContact<CloudType>::AdhesiveWallSurfaceContact
     maxDiameter_(other.maxDiameter_),
     walls_(other.walls_),
     model_(other.model_),
-    threeD_(other.threeD_)
+    threeD_(other.threeD_),
+    positions_(other.positions_)
 {}
 
 
@@ -171,7 +193,11 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::postMove
         return;
     }
 
-    const point end = compat::position(p, this->owner().mesh());
+    const point end = (*positions_)(p);
+    if (debug)
+    {
+        checkPosition(p, end);
+    }
     const std::optional<brachDunn::Contact> contact =
         walls_->firstContact(p.cell(), position0, end, 0.5*p.d());
     if (!contact || wedged(p, contact->fraction))
