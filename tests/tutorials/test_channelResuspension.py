@@ -8,6 +8,8 @@ writes:
 - every parcel is deposited on the floor in the first step, none anywhere
   else, and the deposit's count stays; the mass balance closes in every
   run (restart) and its resuspended mass is the statistics';
+- every deposit touched the floor with its surface (the tutorial's
+  adhesiveWallSurfaceContact), none fell back to contact at the centre;
 - the library's fraction remaining after every step is within 4 binomial
   standard errors of the package's independent rock'n'roll
   (adhesivewall.resuspension, the same steps);
@@ -92,6 +94,16 @@ def test_every_parcel_deposited_on_the_floor_and_kept(case):
         assert elsewhere.sum("resuspensionParcels") == 0
         assert rows.where(patch=channel.FLOOR).sum("captureParcels") == \
             2 * PARCELS
+
+
+def test_every_deposit_touched_with_its_surface(case):
+    folders = channel.statistics_folders(case)
+    for folder in folders:
+        contacts = tables.read(os.path.join(folder, "surfaceContact.dat"))
+        last = contacts.where(time=contacts["time"][-1])
+        assert last.where(patch=channel.FLOOR).sum("surfaceContacts") == \
+            2 * PARCELS, folder
+        assert last.sum("centreContacts") == 0, folder
 
 
 def test_mass_balance_closes_in_every_run(case):

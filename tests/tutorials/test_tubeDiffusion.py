@@ -21,6 +21,8 @@ exactBrownianMotion), the physics:
 - at most 0.5 % of the parcels still airborne at the end, none back
   through the inlet (Peclet numbers 2000 and more);
 - the penetration rises with the diameter;
+- every deposit is a contact at the surface (the tutorial's
+  adhesiveWallSurfaceContact), none a fallback to the centre;
 - nothing lost, the table, the plot and the .foam file written, no FOAM
   FATAL, no NaN.
 """
@@ -171,3 +173,13 @@ def test_penetration_rises_with_diameter(brownian):
     p, se = results["penetration"], results["penetrationSE"]
     for i in range(1, len(results)):
         assert p[i] > p[i - 1] - 2 * math.hypot(se[i], se[i - 1])
+
+
+def test_every_deposit_touched_with_its_surface(brownian):
+    contacts = tables.read(os.path.join(
+        statistics.output_folder(brownian), "surfaceContact.dat"))
+    last = contacts.where(time=contacts["time"][-1])
+    deposited = results_of(brownian).sum("deposited")
+    assert deposited > 0
+    assert last.where(patch="wall").sum("surfaceContacts") == deposited
+    assert last.sum("centreContacts") == 0
