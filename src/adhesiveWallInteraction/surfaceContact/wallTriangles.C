@@ -34,6 +34,18 @@ Foam::treeBoundBox grownBox
     return Foam::treeBoundBox(toFoam(t.lower) - grow, toFoam(t.upper) + grow);
 }
 
+
+//- Whether a sphere of radius r whose centre is hA from a flat plane at the
+//  start of a sub-step and hB at its end starts in contact with it (to
+//  1e-9 r) and leaves it or slides along it
+bool leaving(const double hA, const double hB, const double r)
+{
+    return
+        std::abs(hA) >= (1 - 1e-9)*r
+     && std::abs(hA) <= r
+     && (hA > 0 ? hB - hA : hA - hB) >= 0;
+}
+
 } // End anonymous namespace
 
 
@@ -446,20 +458,6 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
     return
         onPlane && (!swept || onPlane->fraction <= swept->fraction)
       ? onPlane : swept;
-}
-
-
-bool Foam::wallTriangles::leaving
-(
-    const double hA,
-    const double hB,
-    const double r
-)
-{
-    return
-        std::abs(hA) >= (1 - 1e-9)*r
-     && std::abs(hA) <= r
-     && (hA > 0 ? hB - hA : hA - hB) >= 0;
 }
 
 
