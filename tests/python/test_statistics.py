@@ -47,3 +47,18 @@ def test_final_sum(stats):
     assert statistics.final(stats, "captureParticles", patch="walls") == 3
     with pytest.raises(KeyError):
         statistics.final(stats, "captureParticles", patch="fibre")
+
+
+def test_surface_contacts_of_a_case(tmp_path):
+    folder = tmp_path / "postProcessing/lagrangian/kinematicCloud" \
+        / "adhesiveWallInteraction/0"
+    folder.mkdir(parents=True)
+    (folder / "surfaceContact.dat").write_text(
+        "# Contacts at the surface and at the centre\n"
+        "# time\tpatch\tsurfaceContacts\tcentreContacts\n"
+        "1\tfloor\t5\t1\n1\tsides\t2\t0\n"
+        "2\tfloor\t7\t1\n2\tsides\t3\t0\n")
+    contacts = statistics.read_surface_contacts(tmp_path)
+    assert statistics.final(contacts, "surfaceContacts") == 10
+    assert statistics.final(contacts, "surfaceContacts", patch="sides") == 3
+    assert statistics.final(contacts, "centreContacts") == 1

@@ -100,10 +100,9 @@ def test_every_deposit_touched_with_its_surface(case):
     folders = channel.statistics_folders(case)
     for folder in folders:
         contacts = tables.read(os.path.join(folder, "surfaceContact.dat"))
-        last = contacts.where(time=contacts["time"][-1])
-        assert last.where(patch=channel.FLOOR).sum("surfaceContacts") == \
-            2 * PARCELS, folder
-        assert last.sum("centreContacts") == 0, folder
+        assert statistics.final(contacts, "surfaceContacts",
+                                patch=channel.FLOOR) == 2 * PARCELS, folder
+        assert statistics.final(contacts, "centreContacts") == 0, folder
 
 
 def test_mass_balance_closes_in_every_run(case):

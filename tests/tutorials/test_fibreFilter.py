@@ -117,12 +117,10 @@ def test_nothing_lost(case, results, cloud):
 @pytest.mark.parametrize("cloud", fibre.CLOUDS)
 def test_no_fallback(case, cloud):
     for sub, _ in fibre.sub_cases(case):
-        contacts = tables.read(os.path.join(
-            statistics.output_folder(os.path.join(case, sub), cloud),
-            "surfaceContact.dat"))
-        last = contacts.where(time=contacts["time"][-1])
-        assert last.sum("surfaceContacts") > 0, sub
-        assert last.sum("centreContacts") == 0, sub
+        contacts = statistics.read_surface_contacts(os.path.join(case, sub),
+                                                    cloud)
+        assert statistics.final(contacts, "surfaceContacts") > 0, sub
+        assert statistics.final(contacts, "centreContacts") == 0, sub
 
 
 def _rows(results):

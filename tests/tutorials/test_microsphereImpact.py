@@ -85,11 +85,9 @@ def test_impacts_where_the_surface_touches(case):
     assert len(impacts) == 40
     for z, d in zip(impacts["z"], impacts["diameter"]):
         assert abs(z - d / 2) <= 1e-9 * d, (z, d)
-    contacts = tables.read(os.path.join(
-        statistics.output_folder(case), "surfaceContact.dat"))
-    last = contacts.where(time=contacts["time"][-1])
-    assert last.where(patch="plate").sum("surfaceContacts") == 40
-    assert last.sum("centreContacts") == 0
+    contacts = statistics.read_surface_contacts(case)
+    assert statistics.final(contacts, "surfaceContacts", patch="plate") == 40
+    assert statistics.final(contacts, "centreContacts") == 0
 
 
 def test_same_results_as_before_the_port(case):

@@ -176,10 +176,9 @@ def test_penetration_rises_with_diameter(brownian):
 
 
 def test_every_deposit_touched_with_its_surface(brownian):
-    contacts = tables.read(os.path.join(
-        statistics.output_folder(brownian), "surfaceContact.dat"))
-    last = contacts.where(time=contacts["time"][-1])
+    contacts = statistics.read_surface_contacts(brownian)
     deposited = results_of(brownian).sum("deposited")
     assert deposited > 0
-    assert last.where(patch="wall").sum("surfaceContacts") == deposited
-    assert last.sum("centreContacts") == 0
+    assert statistics.final(contacts, "surfaceContacts",
+                            patch="wall") == deposited
+    assert statistics.final(contacts, "centreContacts") == 0

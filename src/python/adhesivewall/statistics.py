@@ -5,6 +5,9 @@
         statistics.dat   totals per time, patch, injector and size class
         massBalance.dat  the mass balance at write times
         impacts.csv      one line per impact (maxImpactRecords)
+        surfaceContact.dat  impacts per time and patch where the parcel's
+                         surface touched (surfaceContacts) and where its
+                         centre reached the face first (centreContacts)
 """
 
 import os
@@ -30,6 +33,11 @@ def read_impacts(case=".", cloud="kinematicCloud", start_time="0"):
 def read_mass_balance(case=".", cloud="kinematicCloud", start_time="0"):
     return tables.read(os.path.join(output_folder(case, cloud, start_time),
                                     "massBalance.dat"))
+
+
+def read_surface_contacts(case=".", cloud="kinematicCloud", start_time="0"):
+    return tables.read(os.path.join(output_folder(case, cloud, start_time),
+                                    "surfaceContact.dat"))
 
 
 def final(statistics, column, **rows):
