@@ -435,6 +435,11 @@ std::optional<Contact> firstContact
         {
             const double hA = dot(f.normal, A - f.vertex[0]);
             const double hB = dot(f.normal, B - f.vertex[0]);
+            if (slidesOrLeaves(hA, hB, r))
+            {
+                overlap(*index);
+                continue;
+            }
             if ((hA > r && hB > r) || (hA < -r && hB < -r))
             {
                 continue;
@@ -451,7 +456,12 @@ std::optional<Contact> firstContact
             const double distSqr = magSqr(A - point);
             if (distSqr <= r*r)
             {
-                if (dot(d, A - point) >= 0)
+                // Approaching by less than the tolerance: along (rounding)
+                if
+                (
+                    dot(d, A - point)
+                 >= -contactTolerance*r*std::sqrt(distSqr)
+                )
                 {
                     overlap(*index);
                 }

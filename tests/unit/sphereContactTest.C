@@ -893,6 +893,78 @@ TEST(SphereContact, AlongAPlaneOfSeveralTriangles)
 }
 
 
+TEST(SphereContact, SlidingWithinTheContactTolerance)
+{
+    // A parcel that moves along a wall at contact (a rebound without normal
+    // velocity) starts at r from the plane to rounding, above or below it,
+    // and rounding tilts its segment into the plane or out of it: within
+    // 1e-9 r of touching and approaching by no more than 1e-9 r it slides,
+    // and no triangle of the plane is touched, in any frame
+    const std::vector<Triangle> plane
+    {
+        {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}, {{0, 0, 0}, {1, 1, 0}, {0, 1, 0}},
+        {{1, 0, 0}, {2, 0, 0}, {2, 1, 0}}, {{1, 0, 0}, {2, 1, 0}, {1, 1, 0}}
+    };
+    const std::vector<Triangle> half(plane.begin() + 2, plane.end());
+    const double r = 0.1;
+    for (const Frame& frame : frames)
+    {
+        std::vector<Triangle> wall, halfWall;
+        for (const Triangle& t : plane)
+        {
+            wall.push_back(frame(t));
+        }
+        for (const Triangle& t : half)
+        {
+            halfWall.push_back(frame(t));
+        }
+        const auto along = [&](const std::vector<Triangle>& w, double h,
+                               double sink)
+        {
+            return firstContact
+            (
+                w, frame({0.3, 0.5, h}), frame({1.7, 0.4, h - sink}), r
+            );
+        };
+        for (const double h : {r*(1 - 0.5e-9), r*(1 - 1e-12), r,
+                               r*(1 + 1e-12), r*(1 + 0.5e-9)})
+        {
+            for (const double sink : {0.0, 1e-12*r, 0.5e-9*r, -1e-12*r})
+            {
+                const auto c = along(wall, h, sink);
+                EXPECT_FALSE(c) << "identity " << frame.identity << ", height "
+                    << h/r << " r, sinking " << sink/r << " r: contact at "
+                    << (c ? c->fraction : -1);
+                // ...nor the plate's edge, reached from beyond it
+                EXPECT_FALSE(along(halfWall, h, sink)) << h/r << " " << sink/r;
+            }
+        }
+
+        // Approaching by 1e-6 r from contact: a contact at once (in the
+        // rotated frame the start may lie 1e-16 beyond r: lambda is that
+        // rounding over the approach, below 1e-8)
+        for (const double h : {r*(1 - 1e-12), r})
+        {
+            const auto c = along(wall, h, 1e-6*r);
+            ASSERT_TRUE(c) << h/r;
+            EXPECT_LE(c->fraction, 1e-8) << h/r;
+        }
+        // ...and from 1e-12 r beyond it, when it is 1e-12 r nearer:
+        // lambda = 1e-12/1e-6 (to the same rounding)
+        const auto beyond = along(wall, r*(1 + 1e-12), 1e-6*r);
+        ASSERT_TRUE(beyond);
+        EXPECT_NEAR(beyond->fraction, 1e-6, 1e-8);
+
+        // Overlapping deeply (0.5 r): rounding of the direction is no
+        // approach either, a real one is
+        EXPECT_FALSE(along(wall, 0.5*r, 1e-12*r));
+        const auto deep = along(wall, 0.5*r, 1e-6*r);
+        ASSERT_TRUE(deep);
+        EXPECT_EQ(deep->fraction, 0);
+    }
+}
+
+
 TEST(SphereContact, FromBesideThePlaneOverTheTriangle)
 {
     // A starts within r of the triangle's plane but beside the triangle

@@ -34,18 +34,6 @@ Foam::treeBoundBox grownBox
     return Foam::treeBoundBox(toFoam(t.lower) - grow, toFoam(t.upper) + grow);
 }
 
-
-//- Whether a sphere of radius r whose centre is hA from a flat plane at the
-//  start of a sub-step and hB at its end starts in contact with it (to
-//  1e-9 r) and leaves it or slides along it
-bool leaving(const double hA, const double hB, const double r)
-{
-    return
-        std::abs(hA) >= (1 - 1e-9)*r
-     && std::abs(hA) <= r
-     && (hA > 0 ? hB - hA : hA - hB) >= 0;
-}
-
 } // End anonymous namespace
 
 
@@ -383,11 +371,11 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
                 continue;
             }
             // Leaving a plane it starts in contact with (a rebound from it)
-            // or sliding along it: no contact with its triangles (only a
-            // sphere deeper than 1e-9 r could touch one at an edge); swept
-            // only with other planes, where the core needs them as walls
-            // the sphere overlaps (the edges they share with those)
-            if (leaving(hA, hB, r))
+            // or sliding along it, to the core's tolerance: no contact with
+            // its triangles; swept only with other planes, where the core
+            // needs them as walls the sphere overlaps (the edges they share
+            // with those)
+            if (brachDunn::slidesOrLeaves(hA, hB, r))
             {
                 continue;
             }
@@ -436,7 +424,7 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
         if
         (
             p.flat
-         && leaving
+         && brachDunn::slidesOrLeaves
             (
                 dot(p.normal, a) - p.offset, dot(p.normal, b) - p.offset, r
             )
