@@ -428,20 +428,22 @@ std::optional<Contact> firstContact
     {
         const Face& f = triangles[*index];
         // Both ends farther than r from the plane, on one side: the whole
-        // swept sphere is (most triangles near a parcel, cheaply); A
-        // farther than r from the plane: no contact at A
+        // swept sphere is (most triangles near a parcel, cheaply); touching
+        // the plane at A and sliding along it or leaving it (to the
+        // tolerance): overlapped; A farther than r from the plane: no
+        // contact at A
         bool nearAtA = true;
         if (f.flat)
         {
             const double hA = dot(f.normal, A - f.vertex[0]);
             const double hB = dot(f.normal, B - f.vertex[0]);
+            if ((hA > r && hB > r) || (hA < -r && hB < -r))
+            {
+                continue;
+            }
             if (slidesOrLeaves(hA, hB, r))
             {
                 overlap(*index);
-                continue;
-            }
-            if ((hA > r && hB > r) || (hA < -r && hB < -r))
-            {
                 continue;
             }
             nearAtA = std::abs(hA) <= r;
