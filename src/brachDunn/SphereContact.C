@@ -380,6 +380,7 @@ std::optional<Contact> firstContact
     checkSegment(A, B, r);
     const Vector3 d = B - A;
     const bool moving = magSqr(d) > 0;
+    const double tol = contactTolerance(A, r);
 
     // The triangles the sphere overlaps at A without approaching them (a
     // wall it slides along or leaves), and those it reaches through them:
@@ -430,8 +431,8 @@ std::optional<Contact> firstContact
         // Both ends farther than r from the plane, on one side: the whole
         // swept sphere is (most triangles near a parcel, cheaply); touching
         // the plane at A and sliding along it or leaving it (to the
-        // tolerance): overlapped; A farther than r from the plane: no
-        // contact at A
+        // tolerance): overlapped; A farther than r (and the tolerance) from
+        // the plane: no contact at A
         bool nearAtA = true;
         if (f.flat)
         {
@@ -441,12 +442,12 @@ std::optional<Contact> firstContact
             {
                 continue;
             }
-            if (slidesOrLeaves(hA, hB, r))
+            if (slidesOrLeaves(hA, hB, r, tol))
             {
                 overlap(*index);
                 continue;
             }
-            nearAtA = std::abs(hA) <= r;
+            nearAtA = std::abs(hA) <= r + tol;
         }
         if (boxesApart(f, swept))
         {
@@ -456,13 +457,14 @@ std::optional<Contact> firstContact
         {
             const Vector3 point = closestPoint(f, A);
             const double distSqr = magSqr(A - point);
-            if (distSqr <= r*r)
+            if (distSqr <= (r + tol)*(r + tol))
             {
-                // Approaching by less than the tolerance: along (rounding)
+                // Touching to the tolerance; approaching by less than it:
+                // along (rounding)
                 if
                 (
                     dot(d, A - point)
-                 >= -contactTolerance*r*std::sqrt(distSqr)
+                 >= -tol*std::sqrt(distSqr)
                 )
                 {
                     overlap(*index);

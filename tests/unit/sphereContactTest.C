@@ -940,20 +940,20 @@ TEST(SphereContact, SlidingWithinTheContactTolerance)
             }
         }
 
-        // Approaching by 1e-6 r from contact: a contact at once (in the
-        // rotated frame the start may lie 1e-16 beyond r: lambda is that
-        // rounding over the approach, below 1e-8)
-        for (const double h : {r*(1 - 1e-12), r})
+        // Approaching by 1e-6 r from contact (to the tolerance): a contact
+        // at once (the rotated frame may put the start 1e-16 beyond r and
+        // find it at that rounding over the approach, below 1e-8)
+        for (const double h : {r*(1 - 1e-12), r, r*(1 + 1e-12)})
         {
             const auto c = along(wall, h, 1e-6*r);
             ASSERT_TRUE(c) << h/r;
             EXPECT_LE(c->fraction, 1e-8) << h/r;
         }
-        // ...and from 1e-12 r beyond it, when it is 1e-12 r nearer:
-        // lambda = 1e-12/1e-6 (to the same rounding)
-        const auto beyond = along(wall, r*(1 + 1e-12), 1e-6*r);
+        // From 1e-6 r beyond contact, approaching by 1e-3 r: where it is
+        // 1e-6 r nearer, lambda = 1e-3 (to the rounding of the heights)
+        const auto beyond = along(wall, r*(1 + 1e-6), 1e-3*r);
         ASSERT_TRUE(beyond);
-        EXPECT_NEAR(beyond->fraction, 1e-6, 1e-8);
+        EXPECT_NEAR(beyond->fraction, 1e-3, 1e-12);
 
         // Overlapping deeply (0.5 r): rounding of the direction is no
         // approach either, a real one is
@@ -962,6 +962,36 @@ TEST(SphereContact, SlidingWithinTheContactTolerance)
         ASSERT_TRUE(deep);
         EXPECT_EQ(deep->fraction, 0);
     }
+
+    // Far from the origin (rotated, then shifted by millions of radii: a
+    // sub-micron particle in a domain of centimetres), where rounding of
+    // the coordinates alone (about 1e-8 r here) exceeds 1e-9 r: the
+    // tolerance grows with the coordinates, and sliding stays sliding
+    const Frame rotated{false};
+    const auto far = [&](const Vector3& v)
+    {
+        return rotated(v) + Vector3{1e6, 2e6, -3e6};
+    };
+    std::vector<Triangle> farWall;
+    for (const Triangle& t : plane)
+    {
+        farWall.push_back({far(t.a), far(t.b), far(t.c)});
+    }
+    int slid = 0;
+    for (int i = 0; i <= 100; ++i)
+    {
+        // Starts along the plane, each rounded its own way
+        const double x = 0.3 + 0.004*i;
+        if (!firstContact(farWall, far({x, 0.5, r}), far({x + 1, 0.4, r}), r))
+        {
+            ++slid;
+        }
+    }
+    EXPECT_EQ(slid, 101);
+    const auto farApproach =
+        firstContact(farWall, far({0.3, 0.5, r}), far({1.3, 0.4, 0.999*r}), r);
+    ASSERT_TRUE(farApproach);
+    EXPECT_LE(farApproach->fraction, 1e-4);
 }
 
 

@@ -359,6 +359,7 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
     std::vector<int>* reached = nullptr;
     std::optional<brachDunn::Contact> onPlane;
     const brachDunn::Vector3 a(toCore(A)), b(toCore(B));
+    const double tol = brachDunn::contactTolerance(a, r);
     for (int k = cellPlaneStart_[celli]; k < cellPlaneStart_[celli + 1]; ++k)
     {
         const plane& p = planes_[k];
@@ -375,7 +376,7 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
             // its triangles; swept only with other planes, where the core
             // needs them as walls the sphere overlaps (the edges they share
             // with those)
-            if (brachDunn::slidesOrLeaves(hA, hB, r))
+            if (brachDunn::slidesOrLeaves(hA, hB, r, tol))
             {
                 continue;
             }
@@ -426,7 +427,8 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
             p.flat
          && brachDunn::slidesOrLeaves
             (
-                dot(p.normal, a) - p.offset, dot(p.normal, b) - p.offset, r
+                dot(p.normal, a) - p.offset, dot(p.normal, b) - p.offset,
+                r, tol
             )
         )
         {
