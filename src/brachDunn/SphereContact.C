@@ -429,22 +429,23 @@ std::optional<Contact> firstContact
     {
         const Face& f = triangles[*index];
         // Both ends farther than r from the plane, on one side: the whole
-        // swept sphere is (most triangles near a parcel, cheaply); touching
-        // the plane at A and sliding along it or leaving it (to the
-        // tolerance): overlapped; A farther than r (and the tolerance) from
-        // the plane: no contact at A
+        // swept sphere is (most triangles near a parcel, cheaply), unless
+        // it slides along the plane or leaves it (to the tolerance, which
+        // marks the triangle as overlapped); A farther than r and the
+        // tolerance from the plane: no contact at A
         bool nearAtA = true;
+        bool sliding = false;
         if (f.flat)
         {
             const double hA = dot(f.normal, A - f.vertex[0]);
             const double hB = dot(f.normal, B - f.vertex[0]);
-            if ((hA > r && hB > r) || (hA < -r && hB < -r))
+            sliding = slidesOrLeaves(hA, hB, r, tol);
+            if
+            (
+                !sliding
+             && ((hA > r && hB > r) || (hA < -r && hB < -r))
+            )
             {
-                continue;
-            }
-            if (slidesOrLeaves(hA, hB, r, tol))
-            {
-                overlap(*index);
                 continue;
             }
             nearAtA = std::abs(hA) <= r + tol;
@@ -453,18 +454,27 @@ std::optional<Contact> firstContact
         {
             continue;
         }
+        if (sliding)
+        {
+            overlap(*index);
+            continue;
+        }
         if (nearAtA)
         {
             const Vector3 point = closestPoint(f, A);
             const double distSqr = magSqr(A - point);
             if (distSqr <= (r + tol)*(r + tol))
             {
-                // Touching to the tolerance; approaching by less than it:
-                // along (rounding)
+                // Touching (to the tolerance): moving away or along, or
+                // approaching but ending no deeper than r - tol towards the
+                // closest point (rounding, or a slide within the contact
+                // band), is no contact; deeper, any approach is one
+                const double dist = std::sqrt(distSqr);
+                const double towards = dot(d, A - point);
                 if
                 (
-                    dot(d, A - point)
-                 >= -tol*std::sqrt(distSqr)
+                    towards >= 0
+                 || (r > tol && distSqr + towards >= (r - tol)*dist)
                 )
                 {
                     overlap(*index);

@@ -895,11 +895,12 @@ TEST(SphereContact, AlongAPlaneOfSeveralTriangles)
 
 TEST(SphereContact, SlidingWithinTheContactTolerance)
 {
-    // A parcel that moves along a wall at contact (a rebound without normal
-    // velocity) starts at r from the plane to rounding, above or below it,
-    // and rounding tilts its segment into the plane or out of it: within
-    // 1e-9 r of touching and approaching by no more than 1e-9 r it slides,
-    // and no triangle of the plane is touched, in any frame
+    // The rule of the contact tolerance tol (about 1e-9 r here), not exact
+    // geometry: a parcel that moves along a wall at contact (a rebound
+    // without normal velocity) starts at r from the plane to rounding,
+    // above or below it, and rounding tilts its segment into the plane or
+    // out of it. Starting within tol of r and ending no deeper than r - tol
+    // it slides, and no triangle of the plane is touched, in any frame
     const std::vector<Triangle> plane
     {
         {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}, {{0, 0, 0}, {1, 1, 0}, {0, 1, 0}},
@@ -942,7 +943,9 @@ TEST(SphereContact, SlidingWithinTheContactTolerance)
 
         // Approaching by 1e-6 r from contact (to the tolerance): a contact
         // at once (the rotated frame may put the start 1e-16 beyond r and
-        // find it at that rounding over the approach, below 1e-8)
+        // find it at that rounding over the approach, below 1e-8; from
+        // r (1 + 1e-12) the exact contact lies 1e-6 of the segment on, 1e-12
+        // r nearer the plane: the tolerance takes it as touching)
         for (const double h : {r*(1 - 1e-12), r, r*(1 + 1e-12)})
         {
             const auto c = along(wall, h, 1e-6*r);
@@ -955,13 +958,33 @@ TEST(SphereContact, SlidingWithinTheContactTolerance)
         ASSERT_TRUE(beyond);
         EXPECT_NEAR(beyond->fraction, 1e-3, 1e-12);
 
-        // Overlapping deeply (0.5 r): rounding of the direction is no
-        // approach either, a real one is
-        EXPECT_FALSE(along(wall, 0.5*r, 1e-12*r));
-        const auto deep = along(wall, 0.5*r, 1e-6*r);
+        // A slow approach is caught once it ends deeper than r - tol:
+        // from r (1 - 0.8e-9), sinking 0.4e-9 r
+        const auto slow = along(wall, r*(1 - 0.8e-9), 0.4e-9*r);
+        ASSERT_TRUE(slow);
+        EXPECT_EQ(slow->fraction, 0);
+
+        // Overlapping deeply (0.5 r), beyond the contact band: any approach
+        // is a contact at once; moving exactly along (identity frame only:
+        // elsewhere rounding decides) or away is none
+        const auto deep = along(wall, 0.5*r, 1e-12*r);
         ASSERT_TRUE(deep);
         EXPECT_EQ(deep->fraction, 0);
+        if (frame.identity)
+        {
+            EXPECT_FALSE(along(wall, 0.5*r, 0));
+        }
+        EXPECT_FALSE(along(wall, 0.5*r, -1e-6*r));
     }
+
+    // A point (r = 0) within the tolerance of the plane, moving through it
+    // slowly: a contact at once (no sliding for a radius within tol)
+    const auto point = firstContact
+    (
+        plane, {0.3, 0.5, 4e-15}, {0.4, 0.5, -4e-15}, 0
+    );
+    ASSERT_TRUE(point);
+    EXPECT_EQ(point->fraction, 0);
 
     // Far from the origin (rotated, then shifted by millions of radii: a
     // sub-micron particle in a domain of centimetres), where rounding of

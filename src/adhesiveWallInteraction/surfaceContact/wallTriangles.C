@@ -380,12 +380,14 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
             {
                 continue;
             }
-            // From beyond reach of the plane, the sphere meets it first
-            // where its centre is r from it: when the foot of the centre
-            // there lies in one of the plane's triangles, that is the first
-            // contact with any of them (none is nearer than their plane),
-            // found without sweeping each (most contacts with a flat wall)
-            if (std::abs(hA) > r)
+            // From beyond reach of the plane (and the tolerance: within it,
+            // the core takes the sphere as touching at A), the sphere meets
+            // it first where its centre is r from it: when the foot of the
+            // centre there lies in one of the plane's triangles, that is
+            // the first contact with any of them (none is nearer than their
+            // plane), found without sweeping each (most contacts with a
+            // flat wall)
+            if (std::abs(hA) > r + tol)
             {
                 const double side = hA > 0 ? 1 : -1;
                 const double fraction = (side*hA - r)/(side*(hA - hB));

@@ -5,9 +5,10 @@
         statistics.dat   totals per time, patch, injector and size class
         massBalance.dat  the mass balance at write times
         impacts.csv      one line per impact (maxImpactRecords)
-        surfaceContact.dat  impacts per time and patch where the parcel's
-                         surface touched (surfaceContacts) and where its
-                         centre reached the face first (centreContacts)
+        surfaceContact.dat  per time and patch, the impacts so far where
+                         the parcel's surface touched (surfaceContacts)
+                         and where its centre reached the face first
+                         (centreContacts)
 """
 
 import os
