@@ -482,8 +482,21 @@ Foam::labelList Foam::AdhesiveWallInteraction<CloudType>::wallPatches() const
 
 
 template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::countSurfaceContacts()
+void Foam::AdhesiveWallInteraction<CloudType>::countSurfaceContacts
+(
+    const word& function
+)
 {
+    if (!surfaceContactFunction_.empty() && function != surfaceContactFunction_)
+    {
+        FatalErrorInFunction
+            << "Cloud functions " << surfaceContactFunction_ << " and "
+            << function << " of cloud " << this->owner().name()
+            << " both ask for contact at the surface: each would take the"
+            << " same contacts again. Keep one, with maxDiameter the largest"
+            << " diameter of the parcels" << exit(FatalError);
+    }
+    surfaceContactFunction_ = function;
     if (contacts_)
     {
         return;

@@ -37,7 +37,8 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::setUp()
             << " needs patchInteractionModel adhesiveWallInteraction, not "
             << this->owner().patchInteraction().type() << exit(FatalError);
     }
-    model_->countSurfaceContacts();
+    model_->countSurfaceContacts(this->modelName());
+    checkMaxDiameter();
     walls_ = std::make_shared<wallTriangles>
     (
         mesh, model_->wallPatches(), 0.5*maxDiameter_
@@ -51,6 +52,76 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::setUp()
         << " patches, " << returnReduce(walls_->nRemote(), sumOp<label>())
         << " held by a neighbouring processor, reach "
         << 0.5*maxDiameter_ << " m" << endl;
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallSurfaceContact<CloudType>::checkMaxDiameter() const
+{
+    // 20 typed for 20 um: a search to 10 m from every cell
+    checkedInput::coreCall(this->coeffDict(), [&]
+    {
+        brachDunn::checkMagnitude
+        (
+            brachDunn::magnitude::diameter, "maxDiameter", maxDiameter_,
+            model_->magnitudes().extreme
+        );
+    });
+
+    // Smaller than an injector's size: known now, not only when such a
+    // parcel moves; far larger: the search costs memory and time for
+    // nothing
+    scalar largest = 0;
+    wallInteractionCloud::forEachInjectorSize
+    (
+        this->owner(),
+        [&](const dictionary& dict, const word& key, const scalar d)
+        {
+            if (d > maxDiameter_)
+            {
+                checkedInput::fail
+                (
+                    this->coeffDict(), "maxDiameter", name(maxDiameter_),
+                    "at least the largest diameter of the parcels: "
+                  + dict.name() + '.' + key + " is " + name(d) + " m"
+                );
+            }
+            largest = max(largest, d);
+        }
+    );
+    if (largest > 0 && maxDiameter_ > 10*largest)
+    {
+        WarningInFunction
+            << "Cloud function " << this->modelName() << ": maxDiameter "
+            << maxDiameter_ << " m is more than ten times the largest"
+            << " diameter the injectors name (" << largest << " m); the"
+            << " wall search reaches maxDiameter/2 from every cell, which"
+            << " costs memory and time. Set it to the largest diameter of"
+            << " the parcels" << endl;
+    }
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::AdhesiveWallSurfaceContact<CloudType>::readMaxDiameter
+(
+    const dictionary& dict
+)
+{
+    checkedInput::requireKnownKeywords
+    (
+        dict, {"type", "maxDiameter"},
+        "cloud function adhesiveWallSurfaceContact"
+    );
+    const scalar maxDiameter = checkedInput::readNumber(dict, "maxDiameter");
+    if (!(maxDiameter > 0))
+    {
+        checkedInput::fail
+        (
+            dict, "maxDiameter", name(maxDiameter), "a diameter > 0 [m]"
+        );
+    }
+    return maxDiameter;
 }
 
 
@@ -119,17 +190,8 @@ Foam::AdhesiveWallSurfaceContact<CloudType>::AdhesiveWallSurfaceContact
 )
 :
     CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
-    maxDiameter_(checkedInput::readNumber(this->coeffDict(), "maxDiameter"))
-{
-    if (!(maxDiameter_ > 0))
-    {
-        checkedInput::fail
-        (
-            this->coeffDict(), "maxDiameter",
-            std::to_string(maxDiameter_), "a diameter > 0 [m]"
-        );
-    }
-}
+    maxDiameter_(readMaxDiameter(this->coeffDict()))
+{}
 
 
 template<class CloudType>
