@@ -613,7 +613,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
     }
     if (contacts_)
     {
-        writeSurfaceContacts();
+        writeSurfaceContacts(os);
     }
 
     // The first step fixes the initial mass; write times print the balance
@@ -660,7 +660,10 @@ void Foam::AdhesiveWallInteraction<CloudType>::store
 
 
 template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::writeSurfaceContacts()
+void Foam::AdhesiveWallInteraction<CloudType>::writeSurfaceContacts
+(
+    Ostream& os
+)
 {
     // Deposits on other processors' faces reach their fields first
     if (deposits_)
@@ -668,6 +671,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeSurfaceContacts()
         deposits_->exchange();
     }
     const labelList totals(contacts_->totals());
+    contacts_->print(os, totals);
     if (contactFile_)
     {
         contacts_->write

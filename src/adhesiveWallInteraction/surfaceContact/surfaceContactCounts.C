@@ -61,6 +61,21 @@ void Foam::surfaceContactCounts::restore(const labelList& stored)
 }
 
 
+void Foam::surfaceContactCounts::print
+(
+    Ostream& os,
+    const labelList& totals
+) const
+{
+    forAll(patches_, i)
+    {
+        os  << "    adhesiveWallSurfaceContact " << names_[i]
+            << ": contacts at the surface " << totals[2*i]
+            << ", at the centre (fallback) " << totals[2*i + 1] << nl;
+    }
+}
+
+
 void Foam::surfaceContactCounts::writeHeader
 (
     Ostream& os,
