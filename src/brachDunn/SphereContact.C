@@ -439,12 +439,15 @@ std::optional<Contact> firstContact
         {
             const double hA = dot(f.normal, A - f.vertex[0]);
             const double hB = dot(f.normal, B - f.vertex[0]);
+            const bool beyond = (hA > r && hB > r) || (hA < -r && hB < -r);
+            // (sliding needs |hA| within tol of r: most candidates are
+            // rejected before it is asked)
+            if (beyond && std::abs(hA) > r + tol)
+            {
+                continue;
+            }
             sliding = slidesOrLeaves(hA, hB, r, tol);
-            if
-            (
-                !sliding
-             && ((hA > r && hB > r) || (hA < -r && hB < -r))
-            )
+            if (beyond && !sliding)
             {
                 continue;
             }
