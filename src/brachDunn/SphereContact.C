@@ -374,7 +374,9 @@ std::optional<Contact> firstContact
     const int* candidatesEnd,
     const Vector3& A,
     const Vector3& B,
-    double r
+    double r,
+    const int* leavingBegin,
+    const int* leavingEnd
 )
 {
     checkSegment(A, B, r);
@@ -425,6 +427,17 @@ std::optional<Contact> firstContact
     static thread_local std::vector<Hit> hits;
     hits.clear();
     const Box swept = sweptBox(A, B, r);
+
+    // The caller's verdict on the walls the sphere leaves or slides along
+    // (their plane's, not each triangle's: a plane of faces that are flat
+    // only to the caller's grouping)
+    for (const int* index = leavingBegin; index != leavingEnd; ++index)
+    {
+        if (!boxesApart(triangles[*index], swept))
+        {
+            overlap(*index);
+        }
+    }
     for (const int* index = candidatesBegin; index != candidatesEnd; ++index)
     {
         const Face& f = triangles[*index];

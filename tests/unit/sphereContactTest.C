@@ -1055,6 +1055,50 @@ TEST(SphereContact, FromBesideThePlaneOverTheTriangle)
 }
 
 
+TEST(SphereContact, LeavingWallsOnTheCallersVerdict)
+{
+    // A floor of two triangles flat only to 1e-7 r (its far edge x = 1
+    // raised by delta: faces a mesh's grouping into planes takes as one
+    // plane), and beyond that edge a slope down at 45 degrees. A sphere
+    // slides along the floor's plane z = 0 at z = r over the edge: the
+    // caller's verdict on the floor is "slides" (slidesOrLeaves of its
+    // plane), though each floor triangle's own plane lies up to delta
+    // nearer, far beyond the tolerance (1e-9 r). Handed as leaving, the
+    // floor is never touched, and the slope, met first at the edge it
+    // shares with the floor (a point of a wall the sphere slides along), is
+    // not touched either: no contact. As plain candidates, the core finds
+    // the raised floor at once.
+    const double r = 0.1, delta = 1e-7*r;
+    const std::vector<Triangle> walls
+    {
+        {{0, 0, 0}, {1, 0, delta}, {1, 1, delta}},
+        {{0, 0, 0}, {1, 1, delta}, {0, 1, 0}},
+        {{1, 0, delta}, {2, 0, delta - 1}, {2, 1, delta - 1}},
+        {{1, 0, delta}, {2, 1, delta - 1}, {1, 1, delta}}
+    };
+    for (const Frame& frame : frames)
+    {
+        std::vector<PreparedTriangle> prepared;
+        for (const Triangle& t : walls)
+        {
+            prepared.push_back(prepare(frame(t)));
+        }
+        const int floor[] = {0, 1}, slope[] = {2, 3}, all[] = {0, 1, 2, 3};
+        const Vector3 A = frame({0.5, 0.5, r}), B = frame({1.2, 0.5, r});
+
+        const auto c = firstContact(prepared, slope, slope + 2, A, B, r,
+                                    floor, floor + 2);
+        EXPECT_FALSE(c) << frame.identity << ": contact at "
+            << (c ? c->fraction : -1) << " with " << (c ? c->triangle : -1);
+
+        const auto plain = firstContact(prepared, all, all + 4, A, B, r);
+        ASSERT_TRUE(plain) << frame.identity;
+        EXPECT_EQ(plain->fraction, 0) << frame.identity;
+        EXPECT_LT(plain->triangle, 2) << frame.identity;
+    }
+}
+
+
 TEST(SphereContact, InputChecks)
 {
     const Triangle t{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};

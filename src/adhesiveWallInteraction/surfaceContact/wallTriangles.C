@@ -373,9 +373,9 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
             }
             // Leaving a plane it starts in contact with (a rebound from it)
             // or sliding along it, to the core's tolerance: no contact with
-            // its triangles; swept only with other planes, where the core
-            // needs them as walls the sphere overlaps (the edges they share
-            // with those)
+            // its triangles; handed to the core only with other planes,
+            // which needs them as walls the sphere overlaps (the edges they
+            // share with those)
             if (brachDunn::slidesOrLeaves(hA, hB, r, tol))
             {
                 continue;
@@ -421,6 +421,13 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
     {
         return onPlane;
     }
+
+    // The planes the sphere leaves or slides along, after the swept
+    // candidates: the core takes them as overlapped on this verdict of
+    // their plane (its own test of each triangle could differ for faces
+    // flat only to the grouping's 1e-9 of the reach, more than the
+    // tolerance of a smaller parcel, and find a contact at the start)
+    const std::size_t nSwept = reached->size();
     for (int k = cellPlaneStart_[celli]; k < cellPlaneStart_[celli + 1]; ++k)
     {
         const plane& p = planes_[k];
@@ -444,8 +451,8 @@ std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
     }
     const std::optional<brachDunn::Contact> swept = brachDunn::firstContact
     (
-        triangles_, reached->data(), reached->data() + reached->size(),
-        a, b, r
+        triangles_, reached->data(), reached->data() + nSwept, a, b, r,
+        reached->data() + nSwept, reached->data() + reached->size()
     );
     return
         onPlane && (!swept || onPlane->fraction <= swept->fraction)
