@@ -485,12 +485,15 @@ std::optional<Contact> firstContact
                 // approaching but ending no deeper than r - tol towards the
                 // closest point (rounding, or a slide within the contact
                 // band), is no contact; deeper, any approach is one
-                const double dist = std::sqrt(distSqr);
+                // (the root only for an approach: rebounds leave)
                 const double towards = dot(d, A - point);
                 if
                 (
                     towards >= 0
-                 || (r > tol && distSqr + towards >= (r - tol)*dist)
+                 || (
+                        r > tol
+                     && distSqr + towards >= (r - tol)*std::sqrt(distSqr)
+                    )
                 )
                 {
                     overlap(*index);
