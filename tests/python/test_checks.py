@@ -630,6 +630,27 @@ def test_execution_time(tmp_path):
         checks.execution_time(log)
 
 
+def test_mass_transferred(tmp_path):
+    # The last value of each kind, summed: 3e-9 + 0 + 1e-10
+    log = tmp_path / "log.solver"
+    log.write_text(
+        "Time = 0.001\n"
+        "    Mass transfer phase change      = 1e-09\n"
+        "    Mass transfer devolatilisation  = 0\n"
+        "    Mass transfer surface reaction  = 5e-11\n"
+        "Time = 0.002\n"
+        "    Current mass in system          = 7e-07\n"
+        "    Mass transfer phase change      = 3e-09\n"
+        "    Mass transfer devolatilisation  = 0\n"
+        "    Mass transfer surface reaction  = 1e-10\n"
+        "End\n")
+    assert checks.mass_transferred(log) == pytest.approx(3.1e-9, rel=1e-15,
+                                                         abs=0)
+    log.write_text("End\n")
+    with pytest.raises(CheckError):
+        checks.mass_transferred(log)
+
+
 def test_bench_lines(tmp_path):
     # Ratios 1.0, 1.3, 1.1: median 1.1, mean 3.4/3, deviation
     # sqrt((0.1333^2 + 0.1667^2 + 0.0333^2)/2) = sqrt(0.07/3)

@@ -369,6 +369,17 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
     setUpResuspension();
     restore();
 
+    // Without parcels at the start the initial mass is known now: none,
+    // less what the injectors gave before the model counted (a model added
+    // to a running case); otherwise it is found after the first step, as
+    // what the other terms leave over (which then also holds what the
+    // first step exchanged with the gas)
+    if (!balance_.started() && !wallInteractionCloud::startsWithParcels(cloud))
+    {
+        // (0 - m: 0 rather than -0 when nothing was injected)
+        balance_.start(0 - wallInteractionCloud::injectedMass(cloud));
+    }
+
     openFiles(cloud.name());
 }
 
@@ -616,7 +627,8 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
         writeSurfaceContacts(os);
     }
 
-    // The first step fixes the initial mass; write times print the balance
+    // The first step fixes the initial mass unless known at the start;
+    // write times print the balance
     if (this->writeTime() || !balance_.started())
     {
         balance_.update

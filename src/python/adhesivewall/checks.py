@@ -907,6 +907,22 @@ def execution_time(log):
     return found
 
 
+def mass_transferred(log):
+    """What a cloud has given the gas so far [kg]: the sum over kinds of the
+    last "Mass transfer <kind> = <value>" line OpenFOAM's thermo and
+    reacting clouds print each step (phase change, devolatilisation,
+    surface reaction: totals since the start of the run)."""
+    last = {}
+    with open(log) as f:
+        for line in f:
+            m = re.match(r"\s*Mass transfer (.*\S)\s*=\s*(\S+)", line)
+            if m:
+                last[m.group(1)] = number(m.group(2), "Mass transfer")
+    if not last:
+        raise CheckError(f"{log}: no Mass transfer line")
+    return sum(last.values())
+
+
 def time_ratios_line(name, times_a, times_b):
     """The line of alternating timed pairs: the ratios B/A (to 4 decimals,
     as printed), their median, mean and standard deviation."""
@@ -1350,6 +1366,12 @@ def _random_positions(n, seed="7"):
 def _execution_time(log):
     """The last ExecutionTime of a solver log [s]."""
     print(fmt(execution_time(log)))
+
+
+@command("massTransferred", "LOG", 1, 1)
+def _mass_transferred(log):
+    """What a thermo or reacting cloud has given the gas so far [kg]."""
+    print(fmt(mass_transferred(log)))
 
 
 @command("timeRatios", "NAME 'TIMES_A' 'TIMES_B'", 3, 3)
