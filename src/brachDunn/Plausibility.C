@@ -102,7 +102,8 @@ std::string checkMagnitude
             throw InputError
             (
                 keyword, toText(value), mistake.substr(prefix.size())
-              + " (extremeValues yes; takes the value as it is)"
+              + " (extremeValues yes in adhesiveWallInteractionCoeffs, or"
+                " the tools' -extremeValues, takes the value as it is)"
             );
         }
         return mistake + " (taken as given: extremeValues yes)";

@@ -85,6 +85,46 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
 
 
 template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::checkSurfaceContactPlace() const
+{
+    // (the TypeName of AdhesiveWallSurfaceContact)
+    const word surfaceContactType("adhesiveWallSurfaceContact");
+
+    // A cloudFunctions block in subModels is never read: the run would go
+    // on with contact at the centre, and only missing log lines tell
+    const entry* functions = compat::findEntry
+    (
+        this->owner().subModelProperties(), "cloudFunctions"
+    );
+    if (!functions || !functions->isDict())
+    {
+        return;
+    }
+    for (const entry& function : functions->dict())
+    {
+        const entry* type =
+            function.isDict()
+          ? compat::findEntry(function.dict(), "type") : nullptr;
+        if
+        (
+            type && type->isStream()
+         && word(type->stream()) == surfaceContactType
+        )
+        {
+            checkedInput::fail
+            (
+                functions->dict(), function.keyword(),
+                "{ type " + surfaceContactType + "; ... }",
+                "a cloud function in subModels, where OpenFOAM does not read"
+                " cloudFunctions: move the cloudFunctions block to the top"
+                " level of the cloud's properties"
+            );
+        }
+    }
+}
+
+
+template<class CloudType>
 void Foam::AdhesiveWallInteraction<CloudType>::restore()
 {
     // Totals of earlier runs, and the parcels the case started with
@@ -312,7 +352,8 @@ void Foam::AdhesiveWallInteraction<CloudType>::checkDiameter
             << "Parcel at " << compat::position(p, this->owner().mesh())
             << " on patch " << pp.name() << ": "
             << brachDunn::unitMistake(diameter, "d", p.d()).c_str()
-            << " (extremeValues yes; takes it as it is)" << nl
+            << " (extremeValues yes in adhesiveWallInteractionCoeffs takes"
+            << " it as it is)" << nl
             << exit(FatalError);
     }
 }
@@ -367,6 +408,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         );
     }
     setUpResuspension();
+    checkSurfaceContactPlace();
     restore();
 
     // Without parcels at the start the initial mass is known now: none,

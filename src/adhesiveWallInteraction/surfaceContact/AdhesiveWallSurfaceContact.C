@@ -137,7 +137,8 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::stopTooLarge
         << " m at " << compat::position(p, this->owner().mesh())
         << " is larger than maxDiameter " << maxDiameter_
         << " m, so walls it touches could be missed. Set maxDiameter to"
-        << " the largest diameter of the parcels" << exit(FatalError);
+        << " the largest diameter the parcels reach (spray parcels grow as"
+        << " they heat)" << exit(FatalError);
 }
 
 
