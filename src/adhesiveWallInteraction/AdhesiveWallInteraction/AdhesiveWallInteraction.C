@@ -447,17 +447,21 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
     }
     checkDiameter(p, pp);
 
-    if (contacts_ && contacts_->handles(pp.index()))
-    {
-        contacts_->addCentre(pp.index());
-    }
-
     vector nw, Up;
     this->owner().patchData(p, pp, nw, Up);
-    return interact
+    const brachDunn::Fate outcome = interact
     (
         p, pp, pp.whichFace(p.face()), -1, nw, Up, *entry, keepParticle
     );
+    if
+    (
+        contacts_ && contacts_->handles(pp.index())
+     && outcome != brachDunn::Fate::notApproaching
+    )
+    {
+        contacts_->addCentre(pp.index());
+    }
+    return true;
 }
 
 
@@ -479,13 +483,17 @@ bool Foam::AdhesiveWallInteraction<CloudType>::touch
         return false;
     }
     checkDiameter(p, pp);
-    if (contacts_)
+    const bool local = faceProc < 0 || faceProc == Pstream::myProcNo();
+    const vector Up = local ? wallVelocity(p, pp, facei, nw) : Zero;
+    const brachDunn::Fate outcome =
+        interact(p, pp, facei, faceProc, nw, Up, *entry, keepParticle);
+    // (the impacts taken, as the statistics count them: not a touch whose
+    // velocity points away from the wall, which the model leaves alone)
+    if (contacts_ && outcome != brachDunn::Fate::notApproaching)
     {
         contacts_->addSurface(patchi);
     }
-    const bool local = faceProc < 0 || faceProc == Pstream::myProcNo();
-    const vector Up = local ? wallVelocity(p, pp, facei, nw) : Zero;
-    return interact(p, pp, facei, faceProc, nw, Up, *entry, keepParticle);
+    return true;
 }
 
 
@@ -576,7 +584,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::countSurfaceContacts
 
 
 template<class CloudType>
-bool Foam::AdhesiveWallInteraction<CloudType>::interact
+brachDunn::Fate Foam::AdhesiveWallInteraction<CloudType>::interact
 (
     typename CloudType::parcelType& p,
     const polyPatch& pp,
@@ -614,7 +622,7 @@ bool Foam::AdhesiveWallInteraction<CloudType>::interact
     if (impact.outcome == Fate::notApproaching)
     {
         keepParticle = true;
-        return true;
+        return impact.outcome;
     }
     impact.U += Up;
     keepParticle = apply
@@ -622,7 +630,7 @@ bool Foam::AdhesiveWallInteraction<CloudType>::interact
         p, impact, entry.type() == wallInteractionEntry::interaction::adhesive
     );
     count(p, pp, facei, faceProc, impact);
-    return true;
+    return impact.outcome;
 }
 
 
