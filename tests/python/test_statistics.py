@@ -62,3 +62,83 @@ def test_surface_contacts_of_a_case(tmp_path):
     assert statistics.final(contacts, "surfaceContacts") == 10
     assert statistics.final(contacts, "surfaceContacts", patch="sides") == 3
     assert statistics.final(contacts, "centreContacts") == 1
+
+
+def test_latest_run_by_default(tmp_path):
+    # A case run from 0 and restarted at 9 and 10: the readers take the
+    # latest run's folder (by time, not by name: as text "9" sorts after
+    # "10"), or the one asked for
+    parent = tmp_path / "postProcessing/lagrangian/kinematicCloud" \
+        / "adhesiveWallInteraction"
+    assert statistics.output_folder(tmp_path) == str(parent / "0")
+    for start, parcels in (("0", 2), ("10", 9), ("9", 5), ("notATime", 1)):
+        (parent / start).mkdir(parents=True)
+        (parent / start / "surfaceContact.dat").write_text(
+            "# time\tpatch\tsurfaceContacts\tcentreContacts\n"
+            f"1\tfloor\t{parcels}\t0\n")
+    assert statistics.output_folder(tmp_path) == str(parent / "10")
+    assert statistics.final(statistics.read_surface_contacts(tmp_path),
+                            "surfaceContacts") == 9
+    assert statistics.final(statistics.read_surface_contacts(
+        tmp_path, start_time="9"), "surfaceContacts") == 5
+
+
+GRADE_HEADER = (
+    "# time\tinjector\tdMin\tdMax\tinjectedParcels\tinjectedParticles"
+    "\tinjectedMass\tcapturedParcels\tcapturedParticles\tcapturedMass"
+    "\tescapedParcels\tescapedParticles\tescapedMass\tremovedParcels"
+    "\tremovedParticles\tremovedMass\tairborneParcels\tairborneParticles"
+    "\tairborneMass\tcapturedFraction\n")
+
+
+def grade_row(time, injector, lo, hi, injected, captured, escaped,
+              airborne, n=1):
+    # parcels of n particles of mass 1, nothing removed
+    values = []
+    for parcels in (injected, captured, escaped, 0, airborne):
+        values += [parcels, n * parcels, n * parcels]
+    values.append(captured / injected if injected else 0)
+    return "\t".join([time, injector, lo, hi] + [str(v) for v in values]) \
+        + "\n"
+
+
+def test_grade_efficiency_of_a_case(tmp_path, monkeypatch):
+    # Two injectors (parcels of 1 and of 3 particles), three classes (the
+    # middle one empty), two times: the last time's sums over the
+    # injectors, captured/injected particles; by injector
+    folder = tmp_path / "postProcessing/lagrangian/kinematicCloud" \
+        / "adhesiveWallInteraction/0"
+    folder.mkdir(parents=True)
+    (folder / "gradeEfficiency.dat").write_text(
+        "# grade efficiency\n" + GRADE_HEADER
+        + grade_row("1", "1", "0", "1e-06", 10, 1, 2, 7)
+        + grade_row("2", "1", "0", "1e-06", 20, 2, 15, 3)
+        + grade_row("2", "1", "1e-06", "2e-06", 0, 0, 0, 0)
+        + grade_row("2", "1", "2e-06", "inf", 40, 30, 10, 0)
+        + grade_row("2", "2", "0", "1e-06", 30, 8, 20, 2, n=3)
+        + grade_row("2", "2", "1e-06", "2e-06", 0, 0, 0, 0, n=3)
+        + grade_row("2", "2", "2e-06", "inf", 10, 10, 0, 0, n=3))
+    classes = statistics.grade_efficiency(
+        statistics.read_grade_efficiency(tmp_path))
+    assert list(classes.text("dMin")) == ["0", "1e-06", "2e-06"]
+    assert list(classes["injectedParcels"]) == [50, 0, 50]
+    assert list(classes["injectedParticles"]) == [110, 0, 70]
+    assert list(classes["capturedParcels"]) == [10, 0, 40]
+    assert list(classes["capturedParticles"]) == [26, 0, 60]
+    assert list(classes["escapedParticles"]) == [75, 0, 10]
+    assert list(classes["airborneParticles"]) == [9, 0, 0]
+    assert classes["capturedFraction"][0] == 26 / 110
+    assert classes["capturedFraction"][2] == 60 / 70
+    assert classes.text("capturedFraction")[1] == "nan"
+    one = statistics.grade_efficiency(
+        statistics.read_grade_efficiency(tmp_path), injectors=["2"])
+    assert list(one["capturedParticles"]) == [24, 0, 30]
+    with pytest.raises(KeyError):
+        statistics.grade_efficiency(
+            statistics.read_grade_efficiency(tmp_path), injectors=["3"])
+
+    # The command: the same table as CSV, and its plot
+    from adhesivewall import __main__
+    monkeypatch.chdir(tmp_path)
+    assert __main__.main(["gradeEfficiency", str(tmp_path)]) == 0
+    assert (tmp_path / "gradeEfficiency.png").stat().st_size > 0

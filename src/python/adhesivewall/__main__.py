@@ -19,6 +19,18 @@ Commands:
                              escapes (particles) and the fraction captured,
                              as CSV; sizeClasses.png in the current folder
 
+  gradeEfficiency CASE [CLOUD [INJECTOR...]]
+                             per size class of the model's
+                             gradeEfficiency.dat at its last time (all
+                             injectors, or those named): particles
+                             injected, captured, escaped, removed,
+                             airborne and the grade efficiency
+                             (captured/injected), as CSV;
+                             gradeEfficiency.png in the current folder
+
+  Both read the latest run of CASE (a restart's totals continue those of
+  the runs before it).
+
   check SUBCOMMAND ...       the case tests' checks (adhesiveWallPost check
                              -help lists them)
 
@@ -60,6 +72,18 @@ def main(argv=None):
             print(",".join(row))
         statistics.plot_size_classes("sizeClasses.png", classes,
                                      f"{case}: {cloud}")
+        return 0
+    if command == "gradeEfficiency" and arguments:
+        from . import statistics
+        case, cloud = arguments[0], (arguments[1:2] or ["kinematicCloud"])[0]
+        classes = statistics.grade_efficiency(
+            statistics.read_grade_efficiency(case, cloud),
+            arguments[2:] or None)
+        print(",".join(classes.names))
+        for row in classes.rows:
+            print(",".join(row))
+        statistics.plot_grade_efficiency("gradeEfficiency.png", classes,
+                                         f"{case}: {cloud}")
         return 0
     if command == "check":
         from . import checks

@@ -16,27 +16,50 @@ import os
 from . import tables
 
 
-def output_folder(case=".", cloud="kinematicCloud", start_time="0"):
-    return os.path.join(case, "postProcessing", "lagrangian", cloud,
-                        "adhesiveWallInteraction", str(start_time))
+def _latest_start_time(parent):
+    """The folder of parent named by the largest time ("0" when it has
+    none): each run writes its files into the folder of its start time,
+    and a restart's totals continue those before it."""
+    times = []
+    if os.path.isdir(parent):
+        for name in os.listdir(parent):
+            try:
+                times.append((float(name), name))
+            except ValueError:
+                continue
+    return max(times)[1] if times else "0"
 
 
-def read_statistics(case=".", cloud="kinematicCloud", start_time="0"):
+def output_folder(case=".", cloud="kinematicCloud", start_time=None):
+    """The model's output folder of a run: that of start_time, or by
+    default of the latest run (a restart writes into its own start time's
+    folder; the totals of statistics.dat, massBalance.dat,
+    surfaceContact.dat and gradeEfficiency.dat continue across restarts,
+    so the latest run's last rows hold the whole case, while its
+    impacts.csv holds that run's impacts only)."""
+    parent = os.path.join(case, "postProcessing", "lagrangian", cloud,
+                          "adhesiveWallInteraction")
+    if start_time is None:
+        start_time = _latest_start_time(parent)
+    return os.path.join(parent, str(start_time))
+
+
+def read_statistics(case=".", cloud="kinematicCloud", start_time=None):
     return tables.read(os.path.join(output_folder(case, cloud, start_time),
                                     "statistics.dat"))
 
 
-def read_impacts(case=".", cloud="kinematicCloud", start_time="0"):
+def read_impacts(case=".", cloud="kinematicCloud", start_time=None):
     return tables.read(os.path.join(output_folder(case, cloud, start_time),
                                     "impacts.csv"))
 
 
-def read_mass_balance(case=".", cloud="kinematicCloud", start_time="0"):
+def read_mass_balance(case=".", cloud="kinematicCloud", start_time=None):
     return tables.read(os.path.join(output_folder(case, cloud, start_time),
                                     "massBalance.dat"))
 
 
-def read_surface_contacts(case=".", cloud="kinematicCloud", start_time="0"):
+def read_surface_contacts(case=".", cloud="kinematicCloud", start_time=None):
     return tables.read(os.path.join(output_folder(case, cloud, start_time),
                                     "surfaceContact.dat"))
 
@@ -99,7 +122,60 @@ def plot_size_classes(path, classes, title=""):
     plots.save(fig, path)
 
 
-def read_grade_efficiency(case=".", cloud="kinematicCloud", start_time="0"):
+GRADE_COLUMNS = ["dMin", "dMax", "injectedParcels", "injectedParticles",
+                 "capturedParcels", "capturedParticles", "escapedParticles",
+                 "removedParticles", "airborneParticles", "capturedFraction"]
+
+
+def grade_efficiency(grade, injectors=None):
+    """Per size class (dMin, dMax) of gradeEfficiency.dat at its last time,
+    summed over the injectors given (all by default): the parcels and
+    particles injected and captured, the particles escaped, removed and
+    airborne, and the grade efficiency capturedFraction = captured /
+    injected particles (nan for a class nothing was injected into). A
+    Table, in order of dMin."""
+    last = grade.last_time()
+    if injectors is not None:
+        last = last.where(injector=lambda i: i in injectors)
+        if not len(last):
+            raise KeyError(f"{grade.source}: no rows of {injectors}")
+    classes = sorted(set(zip(last.text("dMin"), last.text("dMax"))),
+                     key=lambda c: float(c[0]))
+    rows = []
+    for lo, hi in classes:
+        of = last.where(dMin=lo, dMax=hi)
+        sums = [of.sum(name) for name in GRADE_COLUMNS[2:-1]]
+        injected, captured = sums[1], sums[3]
+        fraction = "%.17g" % (captured / injected) if injected else "nan"
+        rows.append([lo, hi] + ["%.17g" % x for x in sums] + [fraction])
+    return tables.Table(GRADE_COLUMNS, rows, grade.source)
+
+
+def plot_grade_efficiency(path, classes, title=""):
+    """The grade efficiency per size class against the diameter [um] on a
+    logarithmic axis: a point at each class's geometric mean diameter (an
+    open class at its one bound), classes nothing was injected into left
+    out."""
+    from . import plots
+    import numpy as np
+    lo = classes["dMin"]
+    hi = classes["dMax"]
+    closed = (lo > 0) & np.isfinite(hi)
+    mid = np.where(closed, np.sqrt(np.where(closed, lo * hi, 1)),
+                   np.where(lo > 0, lo, hi))
+    eta = classes["capturedFraction"]
+    shown = np.isfinite(eta) & (mid > 0)
+    fig, ax = plots.figure(8, 5)
+    ax.plot(mid[shown] * 1e6, eta[shown], "o-")
+    ax.set_xscale("log")
+    ax.set_xlabel("particle diameter [um] (size class, geometric mean)")
+    ax.set_ylabel("captured / injected particles")
+    ax.set_ylim(0, max(1.1 * eta[shown].max(), 1e-3) if shown.any() else 1)
+    ax.set_title(title)
+    plots.save(fig, path)
+
+
+def read_grade_efficiency(case=".", cloud="kinematicCloud", start_time=None):
     """gradeEfficiency.dat: per time, injector and size class, what became
     of the parcels injected (the model writes it with writeToFile)."""
     return tables.read(os.path.join(output_folder(case, cloud, start_time),
