@@ -44,6 +44,31 @@ Foam::SlipSphereDragForce<CloudType>::SlipSphereDragForce
             "is not read with meanFreePath (T goes with p)"
         );
     }
+
+    // It is the drag: another drag law beside it (sphereDrag left in when
+    // switching) would double the drag and halve exactBrownianMotion's
+    // diffusivity kT/Sp, with nothing in the log (OpenFOAM's drag forces
+    // are all named ...Drag)
+    const dictionary& forces =
+        owner.subModelProperties().subOrEmptyDict("particleForces");
+    for (const entry& force : forces)
+    {
+        const word& name = force.keyword();
+        if
+        (
+            name != typeName && name.size() >= 4
+         && name.compare(name.size() - 4, 4, "Drag") == 0
+        )
+        {
+            checkedInput::fail
+            (
+                forces, name, checkedInput::entryText(force),
+                "another drag law beside slipSphereDrag, which is the drag"
+                " (with slip): the drag would count twice. Remove " + name
+              + " from particleForces"
+            );
+        }
+    }
 }
 
 
