@@ -49,9 +49,10 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::setUp()
     Info<< "    " << this->modelName() << ": contact at the surface with "
         << returnReduce(walls_->size() - walls_->nRemote(), sumOp<label>())
         << " wall triangles of " << model_->wallPatches().size()
-        << " patches, " << returnReduce(walls_->nRemote(), sumOp<label>())
+        << " patches (all processors), and copies of "
+        << returnReduce(walls_->nRemote(), sumOp<label>())
         << " held by a neighbouring processor, reach "
-        << 0.5*maxDiameter_ << " m" << endl;
+        << name(0.5*maxDiameter_).c_str() << " m" << endl;
 }
 
 
