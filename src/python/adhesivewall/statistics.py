@@ -79,21 +79,27 @@ SIZE_CLASS_COLUMNS = ["dMin", "dMax", "impactParticles", "reboundParticles",
                       "captureFraction"]
 
 
+def _by_class(table, column, selected):
+    """The rows of a table at its last time whose column is one of those
+    selected (all when None; none: a KeyError), and each size class's rows
+    in order of dMin, as ((dMin, dMax), rows) pairs."""
+    last = table.last_time()
+    if selected is not None:
+        last = last.where(**{column: lambda value: value in selected})
+        if not len(last):
+            raise KeyError(f"{table.source}: no rows of {selected}")
+    classes = sorted(set(zip(last.text("dMin"), last.text("dMax"))),
+                     key=lambda c: float(c[0]))
+    return [((lo, hi), last.where(dMin=lo, dMax=hi)) for lo, hi in classes]
+
+
 def size_classes(statistics, patches=None):
     """Per size class (dMin, dMax) of the statistics at their last time,
     summed over the patches given (all by default) and over injectors: the
     particles that hit a wall, rebounded, were captured and escaped, and
     the fraction of the impacts captured. A Table, in order of dMin."""
-    last = statistics.last_time()
-    if patches is not None:
-        last = last.where(patch=lambda p: p in patches)
-        if not len(last):
-            raise KeyError(f"{statistics.source}: no rows of {patches}")
-    classes = sorted(set(zip(last.text("dMin"), last.text("dMax"))),
-                     key=lambda c: float(c[0]))
     rows = []
-    for lo, hi in classes:
-        of = last.where(dMin=lo, dMax=hi)
+    for (lo, hi), of in _by_class(statistics, "patch", patches):
         impacts = of.sum("impactParticles")
         captured = of.sum("captureParticles")
         rows.append([lo, hi, "%.17g" % impacts,
@@ -134,16 +140,8 @@ def grade_efficiency(grade, injectors=None):
     airborne, and the grade efficiency capturedFraction = captured /
     injected particles (nan for a class nothing was injected into). A
     Table, in order of dMin."""
-    last = grade.last_time()
-    if injectors is not None:
-        last = last.where(injector=lambda i: i in injectors)
-        if not len(last):
-            raise KeyError(f"{grade.source}: no rows of {injectors}")
-    classes = sorted(set(zip(last.text("dMin"), last.text("dMax"))),
-                     key=lambda c: float(c[0]))
     rows = []
-    for lo, hi in classes:
-        of = last.where(dMin=lo, dMax=hi)
+    for (lo, hi), of in _by_class(grade, "injector", injectors):
         sums = [of.sum(name) for name in GRADE_COLUMNS[2:-1]]
         injected, captured = sums[1], sums[3]
         fraction = "%.17g" % (captured / injected) if injected else "nan"
