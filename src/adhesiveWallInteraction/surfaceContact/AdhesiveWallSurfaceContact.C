@@ -164,6 +164,49 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::checkPosition
 
 
 template<class CloudType>
+void Foam::AdhesiveWallSurfaceContact<CloudType>::takeMotionVelocity
+(
+    typename CloudType::parcelType& p,
+    const point& position0,
+    const point& end,
+    const scalar dt
+) const
+{
+    // OpenFOAM's tracking moves a parcel over a sub-step by its velocity at
+    // the sub-step's start (the displacement over the sub-step's time); its
+    // velocity now is the end's, which a force may have turned away from
+    // the wall within the sub-step, or which holds the next step's draw of
+    // exactBrownianMotion (in the sub-step that completes a time step).
+    // The displacement gives the start's velocity to the rounding of the
+    // positions (below 1e-10 of it from a displacement of 1e-6 of the
+    // coordinates on): a shorter one, and a velocity that equals the end's
+    // to 1e-9 (no force acted), keep the end's, exact.
+    const vector moved = end - position0;
+    const scalar coordinates = cmptSum(cmptMag(position0));
+    if (!(dt > 0 && cmptSum(cmptMag(moved)) > 1e-6*coordinates))
+    {
+        return;
+    }
+    vector U = moved/dt;
+
+    // In 2-D the motion in the empty direction is pulled back to the mesh's
+    // centre plane: that component stays the parcel's own
+    const Vector<label>& solved = this->owner().mesh().solutionD();
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (solved[d] < 0)
+        {
+            U[d] = p.U()[d];
+        }
+    }
+    if (mag(U - p.U()) > 1e-9*mag(U))
+    {
+        p.U() = U;
+    }
+}
+
+
+template<class CloudType>
 bool Foam::AdhesiveWallSurfaceContact<CloudType>::wedged
 (
     const typename CloudType::parcelType& p,
@@ -294,6 +337,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::postMove
     }
     nw /= mag(nw);
 
+    takeMotionVelocity(p, position0, end, dt);
     model_->touch
     (
         p, origin.patchi, origin.facei, origin.proc, nw, keepParticle
