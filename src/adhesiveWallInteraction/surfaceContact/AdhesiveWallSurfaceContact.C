@@ -178,7 +178,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::takeMotionVelocity
     // the wall within the sub-step, or which holds the next step's draw of
     // exactBrownianMotion (in the sub-step that completes a time step).
     // The displacement gives the start's velocity to the rounding of the
-    // positions (below 1e-10 of it from a displacement of 1e-6 of the
+    // positions (of order 1e-10 of it from a displacement of 1e-6 of the
     // coordinates on): a shorter one, and a velocity that equals the end's
     // to 1e-9 (no force acted), keep the end's, exact.
     const vector moved = end - position0;
