@@ -199,7 +199,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::takeMotionVelocity
             U[d] = p.U()[d];
         }
     }
-    if (mag(U - p.U()) > 1e-9*mag(U))
+    if (magSqr(U - p.U()) > 1e-18*magSqr(U))
     {
         p.U() = U;
     }
