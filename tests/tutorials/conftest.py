@@ -14,12 +14,15 @@ PROJECT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 GOLDEN = os.path.join(PROJECT, "tests", "golden")
 
 
-def run_tutorial(name, *options):
+def run_tutorial(name, *options, folder=""):
     """Copy tutorials/<name> to $TEST_WORK_DIR (else build/tests/work/
-    tutorial.<name>) and run its Allrun with the options; fails with the
+    tutorial.<name>), or beside it to <that>.<folder> (a second variant of
+    the same test), and run its Allrun with the options; fails with the
     end of its output when it fails."""
     work = os.environ.get("TEST_WORK_DIR", os.path.join(
         PROJECT, "build", "tests", "work", "tutorial." + name))
+    if folder:
+        work = work.rstrip(os.sep) + "." + folder
     shutil.rmtree(work, ignore_errors=True)
     shutil.copytree(os.path.join(PROJECT, "tutorials", name), work,
                     symlinks=True)

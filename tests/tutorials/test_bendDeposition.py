@@ -26,6 +26,14 @@ each), judged on the numbers of the files it writes, with these criteria:
   for line);
 - the table, both plots and the .foam files are written, no FOAM FATAL, no
   NaN.
+
+And the variant with contact at the particle's surface (-surfaceContact),
+on the same criteria where they are not the measurements' (it sits above
+them near the onset: README), and:
+- no fallback: every contact is the surface's, none the centre's;
+- per Stokes number stick walls capture at least the parcels they capture
+  with contact at the centre: the paths are the same up to the first
+  contact, and a sphere's surface reaches a wall no later than its centre.
 """
 
 import math
@@ -51,7 +59,24 @@ def results(case):
     return tables.read(os.path.join(case, "results.csv"))
 
 
-def test_runs_cleanly(case):
+@pytest.fixture(scope="module")
+def surface_case():
+    return run_tutorial("bendDeposition", "-reduced", "-surfaceContact",
+                        folder="surfaceContact")
+
+
+@pytest.fixture(scope="module")
+def surface_results(surface_case):
+    return tables.read(os.path.join(surface_case, "results.csv"))
+
+
+# Tests run on both variants take the fixtures' names
+VARIANTS = [("case", "results"), ("surface_case", "surface_results")]
+
+
+@pytest.mark.parametrize("case_name", [v[0] for v in VARIANTS])
+def test_runs_cleanly(request, case_name):
+    case = request.getfixturevalue(case_name)
     assert fatal_logs(case) == []
     assert nan_files(case) == []
     for name in ("log.table", "deposition.png", "depositionMap.png",
@@ -60,13 +85,17 @@ def test_runs_cleanly(case):
         assert os.path.exists(os.path.join(case, name)), name
 
 
-def test_every_stokes_number_of_each_wall_model(results):
+@pytest.mark.parametrize("results_name", [v[1] for v in VARIANTS])
+def test_every_stokes_number_of_each_wall_model(request, results_name):
+    results = request.getfixturevalue(results_name)
     for model in bend.MODELS:
         assert list(results.where(model=model)["Stk"]) == STOKES
 
 
+@pytest.mark.parametrize("variant", VARIANTS)
 @pytest.mark.parametrize("model", bend.MODELS)
-def test_nothing_lost(case, results, model):
+def test_nothing_lost(request, variant, model):
+    case, results = map(request.getfixturevalue, variant)
     sub = os.path.join(case, model)
     end = foam.value("system/controlDict", "endTime", case=sub)
     assert float(foam.latest_time(sub)) == pytest.approx(float(end))
@@ -94,7 +123,9 @@ def test_stick_walls_within_the_yardstick(case, results):
     assert failed == []
 
 
-def test_bounce_only_lowers_deposition(results):
+@pytest.mark.parametrize("results_name", [v[1] for v in VARIANTS])
+def test_bounce_only_lowers_deposition(request, results_name):
+    results = request.getfixturevalue(results_name)
     stick = results.where(model="stick")
     adhesive = results.where(model="adhesive")
     s, s_se = stick["bendPercent"], stick["bendSE"]
@@ -106,6 +137,26 @@ def test_bounce_only_lowers_deposition(results):
         if i:
             assert s[i] >= s[i - 1] - 2 * math.hypot(s_se[i], s_se[i - 1])
     assert a[-1] <= s[-1] - 20
+
+
+@pytest.mark.parametrize("model", bend.MODELS)
+def test_surface_contact_only(surface_case, model):
+    contacts = statistics.read_surface_contacts(
+        os.path.join(surface_case, model))
+    assert statistics.final(contacts, "surfaceContacts") > 0
+    assert statistics.final(contacts, "centreContacts") == 0
+
+
+def test_surface_captures_what_the_centre_captures(results, surface_results):
+    walls = ["inletWall", "bendWall", "outletWall"]
+    centre = results.where(model="stick")
+    surface = surface_results.where(model="stick")
+    assert list(surface["parcels"]) == list(centre["parcels"])
+    for i, stk in enumerate(STOKES):
+        assert sum(surface[w][i] for w in walls) \
+            >= sum(centre[w][i] for w in walls), stk
+    # and more, where the parcels drift onto the wall (README)
+    assert surface.sum("bendWall") > centre.sum("bendWall")
 
 
 def test_same_results_as_before_the_port(case):
