@@ -102,11 +102,9 @@ std::string checkMagnitude
             throw InputError
             (
                 keyword, toText(value), mistake.substr(prefix.size())
-              + " (extremeValues yes in adhesiveWallInteractionCoeffs, or"
-                " the tools' -extremeValues, takes the value as it is)"
             );
         }
-        return mistake + " (taken as given: extremeValues yes)";
+        return mistake + " (taken as given)";
     }
     return outsideRange(m, keyword, value);
 }

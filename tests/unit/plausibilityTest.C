@@ -105,3 +105,14 @@ TEST(Plausibility, TheValueMeantIsTheDecimalOne)
     EXPECT_TRUE(has(stops(magnitude::youngsModulus, "E", 2e-2), "2e+07 (0.02 GPa)"));
     EXPECT_TRUE(has(stops(magnitude::surfaceEnergy, "gamma", 1.5e2), "0.15 (150 mJ/m^2)"));
 }
+
+
+TEST(Plausibility, TheCallerSaysHowToTakeAValueAsGiven)
+{
+    // The core's message ends at the value meant: the keyword or option
+    // that takes the value as given is the adapter's and the tools' to name
+    const std::string e = stops(magnitude::youngsModulus, "E", 320);
+    ASSERT_FALSE(e.empty());
+    EXPECT_EQ(e.back(), '?') << e;
+    EXPECT_FALSE(has(e, "extremeValues")) << e;
+}

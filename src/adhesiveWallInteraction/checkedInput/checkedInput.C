@@ -163,6 +163,31 @@ void Foam::checkedInput::fail
 }
 
 
+std::string Foam::checkedInput::checkMagnitude
+(
+    const dictionary& dict,
+    const std::string& keyword,
+    const scalar value,
+    const brachDunn::Magnitude& m,
+    const bool extreme
+)
+{
+    try
+    {
+        return brachDunn::checkMagnitude(m, keyword, value, extreme);
+    }
+    catch (const brachDunn::InputError& err)
+    {
+        fail
+        (
+            dict, err.keyword(), err.value(), err.requirement()
+          + " (extremeValues yes in adhesiveWallInteractionCoeffs takes the"
+            " value as it is)"
+        );
+    }
+}
+
+
 Foam::scalar Foam::checkedInput::readNumber
 (
     const dictionary& dict,

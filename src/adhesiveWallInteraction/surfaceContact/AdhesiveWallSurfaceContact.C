@@ -60,14 +60,11 @@ template<class CloudType>
 void Foam::AdhesiveWallSurfaceContact<CloudType>::checkMaxDiameter() const
 {
     // 20 typed for 20 um: a search to 10 m from every cell
-    checkedInput::coreCall(this->coeffDict(), [&]
-    {
-        brachDunn::checkMagnitude
-        (
-            brachDunn::magnitude::diameter, "maxDiameter", maxDiameter_,
-            model_->magnitudes().extreme
-        );
-    });
+    checkedInput::checkMagnitude
+    (
+        this->coeffDict(), "maxDiameter", maxDiameter_,
+        brachDunn::magnitude::diameter, model_->magnitudes().extreme
+    );
 
     // Smaller than an injector's size: known now, not only when such a
     // parcel moves; far larger: the search costs memory and time for

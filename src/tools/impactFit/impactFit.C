@@ -285,7 +285,10 @@ brachDunn::ImpactFitSettings fitSettings(const argList& args)
     {
         if (tools::found(args, option))
         {
-            tools::checkMagnitude(args, option, value, *magnitude, extreme);
+            tools::checkMagnitude
+            (
+                args, option, value, *magnitude, extreme, "-extremeValues"
+            );
         }
     }
     return s;
