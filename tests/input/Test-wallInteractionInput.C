@@ -314,6 +314,8 @@ std::vector<inputCase> cases()
              remove("", "maxImpactRecords"), remove("floor", "friction")}, {}},
         {"validBaseClassKeywords", {set("", "U U"), set("", "defaultCoeffs no")}, {}},
         {"validSizeClasses", {set("", "sizeClasses (1e-6 2e-6 5e-6)")}, {}},
+        {"validRecordPatches",
+            {set("", "recordPatches (floor \"(ceil|sid).*\" wall)")}, {}},
 
         {"type", {set("floor", "type bouncy")},
             {"keyword 'type' = bouncy", "unknown patch interaction", floorCoeffs}},
@@ -371,8 +373,17 @@ std::vector<inputCase> cases()
              "not a keyword of adhesiveWallInteraction coefficients",
              // writeToFile, a keyword of the model and of the base class,
              // listed once (v1912's base keywords follow the model's)
-             "maxImpactRecords patches logTables extremeValues U"
+             "maxImpactRecords recordPatches patches logTables extremeValues U"
              " defaultCoeffs writePrecision useUserTime"}},
+        {"recordPatchesUnmatched", {set("", "recordPatches (floor flor)")},
+            {"keyword 'recordPatches' = (floor flor)", "no patch matches flor"}},
+        {"recordPatchesWord", {set("", "recordPatches floor")},
+            {"keyword 'recordPatches' = floor", "must be a list of patch names"}},
+        {"recordPatchesNumbers", {set("", "recordPatches (floor 2)")},
+            {"keyword 'recordPatches' = (floor 2)", "must be a list of patch names"}},
+        {"recordPatchesWithoutRecords",
+            {set("", "recordPatches (floor)"), remove("", "maxImpactRecords")},
+            {"keyword 'recordPatches' = (floor)", "maxImpactRecords > 0"}},
         {"sizeClassesOrder", {set("", "sizeClasses (2e-6 1e-6)")},
             {"keyword 'sizeClasses' = (2e-06 1e-06)", "increase strictly"}},
         // Coefficients that used to overflow at the first impact
@@ -487,6 +498,7 @@ std::vector<mutation> mutations()
     {
         {"", "writeFields"}, {"", "writeToFile"}, {"", "maxImpactRecords"},
         {"", "capture"}, {"", "outputByInjectorId"}, {"", "sizeClasses"},
+        {"", "recordPatches"},
         {"", "particle"}, {"", "U"}, {"", "defaultCoeffs"},
         {"particle", "E"}, {"particle", "nu"},
         {"floor", "type"}, {"floor", "E"}, {"floor", "nu"},
@@ -643,5 +655,13 @@ int main(int argc, char *argv[])
     }
     std::cout << "input: " << failed << " failed\n";
     failed += fuzz(compat::optionFound(args, "verbose"));
-    return failed ? 1 : 0;
+    if (failed)
+    {
+        // Returning 1 is not enough: the argList ends the process with
+        // status 0 when main returns (OpenFOAM v1912: UPstream::exit(0))
+        FatalErrorInFunction
+            << failed << " input cases or mutations failed"
+            << exit(FatalError);
+    }
+    return 0;
 }
