@@ -353,7 +353,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::checkDiameter
             << " on patch " << pp.name() << ": "
             << brachDunn::unitMistake(diameter, "d", p.d()).c_str()
             << " (extremeValues yes in adhesiveWallInteractionCoeffs takes"
-            << " it as it is)" << nl
+            << " it as given)" << nl
             << exit(FatalError);
     }
 }

@@ -181,8 +181,8 @@ std::string Foam::checkedInput::checkMagnitude
         fail
         (
             dict, err.keyword(), err.value(), err.requirement()
-          + " (extremeValues yes in adhesiveWallInteractionCoeffs takes the"
-            " value as it is)"
+          + " (extremeValues yes in adhesiveWallInteractionCoeffs takes it"
+            " as given)"
         );
     }
 }

@@ -59,12 +59,26 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::setUp()
 template<class CloudType>
 void Foam::AdhesiveWallSurfaceContact<CloudType>::checkMaxDiameter() const
 {
-    // 20 typed for 20 um: a search to 10 m from every cell
-    checkedInput::checkMagnitude
+    // 20 typed for 20 um: a search to 10 m from every cell. Taken as
+    // given (extremeValues), it is said; the impact model's range of
+    // diameters is not the search's concern
+    const std::string warning = checkedInput::checkMagnitude
     (
         this->coeffDict(), "maxDiameter", maxDiameter_,
         brachDunn::magnitude::diameter, model_->magnitudes().extreme
     );
+    if
+    (
+        !brachDunn::unitMistake
+        (
+            brachDunn::magnitude::diameter, "maxDiameter", maxDiameter_
+        ).empty()
+    )
+    {
+        WarningInFunction
+            << "In dictionary " << this->coeffDict().name() << ": "
+            << warning.c_str() << endl;
+    }
 
     // Smaller than an injector's size: known now, not only when such a
     // parcel moves; far larger: the search costs memory and time for

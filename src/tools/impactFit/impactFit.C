@@ -274,7 +274,7 @@ brachDunn::ImpactFitSettings fitSettings(const argList& args)
         [&]{ s.wall.check(); }, {{"E", "wallE"}, {"nu", "wallNu"}}
     );
     // Magnitudes that can only be unit mistakes (the case's own values
-    // were checked when it was read)
+    // were checked when it was read, and -rho with it)
     const bool extreme = tools::found(args, "extremeValues");
     for (const auto& [option, value, magnitude] :
         {
@@ -283,7 +283,7 @@ brachDunn::ImpactFitSettings fitSettings(const argList& args)
             std::tuple{"rho", s.rho, &brachDunn::magnitude::density}
         })
     {
-        if (tools::found(args, option))
+        if (tools::found(args, option) && !(materials.rho && option == word("rho")))
         {
             tools::checkMagnitude
             (
