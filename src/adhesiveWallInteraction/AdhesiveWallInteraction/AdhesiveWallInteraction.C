@@ -286,7 +286,8 @@ void Foam::AdhesiveWallInteraction<CloudType>::openFiles
         (
             outputDir()/"impacts.csv",
             coeffs_.maxImpactRecords(),
-            coeffs_.entries().patchNames()
+            coeffs_.entries().patchNames(),
+            coeffs_.recordedPatches()
         );
     }
     if (coeffs_.writeToFile() && Pstream::master())

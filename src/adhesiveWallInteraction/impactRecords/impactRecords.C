@@ -56,7 +56,8 @@ Foam::impactRecords::impactRecords
 (
     const fileName& file,
     const label maxRecords,
-    const wordList& patchNames
+    const wordList& patchNames,
+    const boolList& recorded
 )
 :
     maxRecords_(maxRecords),
@@ -65,6 +66,7 @@ Foam::impactRecords::impactRecords
     buffer_(),
     dropped_(false),
     patchNames_(patchNames),
+    recorded_(recorded),
     file_()
 {
     if (maxRecords_ > 0 && Pstream::master())

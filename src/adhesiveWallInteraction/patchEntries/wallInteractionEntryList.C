@@ -13,23 +13,6 @@ namespace
 
 using namespace Foam;
 
-//- The entry's name matches the patch's name or one of its groups
-bool matches(const keyType& key, const wallInteractionEntryList::patch& p)
-{
-    if (key.match(p.name))
-    {
-        return true;
-    }
-    for (const word& group : p.groups)
-    {
-        if (key.match(group))
-        {
-            return true;
-        }
-    }
-    return false;
-}
-
 
 //- The entries of the patches list, which must be a list of dictionaries
 PtrList<entry> patchEntries(const dictionary& coeffs)
@@ -88,6 +71,28 @@ PtrList<entry> patchEntries(const dictionary& coeffs)
 
 
 // * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * //
+
+bool Foam::wallInteractionEntryList::matches
+(
+    const keyType& key,
+    const patch& p
+)
+{
+    // The patch's name or one of its groups
+    if (key.match(p.name))
+    {
+        return true;
+    }
+    for (const word& group : p.groups)
+    {
+        if (key.match(group))
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
 
 Foam::List<Foam::wallInteractionEntryList::patch>
 Foam::wallInteractionEntryList::patchesOf(const polyBoundaryMesh& bMesh)

@@ -77,6 +77,81 @@ scalarList readSizeClassEdges(const dictionary& coeffs)
     return edges;
 }
 
+
+//- The mesh patches whose impacts impacts.csv records: those recordPatches
+//  names (names, regular expressions or groups, as the patch entries),
+//  else every one
+boolList readRecordedPatches
+(
+    const dictionary& coeffs,
+    const UList<wallInteractionEntryList::patch>& patches,
+    const label maxImpactRecords
+)
+{
+    const char* form = "a list of patch names, regular expressions or groups"
+        " such as (fibre \"(inlet|outlet)\")";
+    boolList recorded(patches.size(), true);
+    const entry* e = checkedInput::find(coeffs, "recordPatches");
+    if (!e)
+    {
+        return recorded;
+    }
+    const auto isPunctuation = [](const token& t, const char c)
+    {
+        return t.isPunctuation() && t.pToken() == c;
+    };
+    label i = e->isDict() ? -1 : checkedInput::listStart(e->stream());
+    bool good = i >= 0;
+    if (good)
+    {
+        const ITstream& tokens = e->stream();
+        for (++i; good && i + 1 < tokens.size(); ++i)
+        {
+            good = tokens[i].isWord() || tokens[i].isString();
+        }
+        good = good && i + 1 == tokens.size()
+         && isPunctuation(tokens[i], token::END_LIST);
+    }
+    if (!good)
+    {
+        checkedInput::fail
+        (
+            coeffs, "recordPatches", checkedInput::entryText(*e),
+            std::string("must be ") + form
+        );
+    }
+    if (maxImpactRecords == 0)
+    {
+        checkedInput::fail
+        (
+            coeffs, "recordPatches", checkedInput::entryText(*e),
+            "selects the patches of impacts.csv, which is written only with"
+            " maxImpactRecords > 0"
+        );
+    }
+    recorded = false;
+    for (const keyType& key : List<keyType>(e->stream()))
+    {
+        bool matched = false;
+        forAll(patches, patchi)
+        {
+            if (wallInteractionEntryList::matches(key, patches[patchi]))
+            {
+                recorded[patchi] = matched = true;
+            }
+        }
+        if (!matched)
+        {
+            checkedInput::fail
+            (
+                coeffs, "recordPatches", checkedInput::entryText(*e),
+                "no patch matches " + std::string(key)
+            );
+        }
+    }
+    return recorded;
+}
+
 } // End anonymous namespace
 
 
@@ -85,7 +160,8 @@ scalarList readSizeClassEdges(const dictionary& coeffs)
 const Foam::wordList Foam::wallInteractionCoeffs::keywords
 {
     "particle", "capture", "writeFields", "outputByInjectorId", "sizeClasses",
-    "writeToFile", "maxImpactRecords", "patches", "logTables", "extremeValues"
+    "writeToFile", "maxImpactRecords", "recordPatches", "patches", "logTables",
+    "extremeValues"
 };
 
 
@@ -159,6 +235,7 @@ Foam::wallInteractionCoeffs::wallInteractionCoeffs
     writeToFile_(checkedInput::readSwitch(coeffs, "writeToFile", false)),
     outputByInjectorId_(readOutputByInjectorId(coeffs)),
     maxImpactRecords_(checkedInput::readCount(coeffs, "maxImpactRecords", 0)),
+    recordedPatches_(readRecordedPatches(coeffs, patches, maxImpactRecords_)),
     sizeClassEdges_(readSizeClassEdges(coeffs)),
     logTables_(checkedInput::readSwitch(coeffs, "logTables", false)),
     magnitudes_
