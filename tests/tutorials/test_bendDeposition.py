@@ -28,8 +28,9 @@ each), judged on the numbers of the files it writes, with these criteria:
   NaN.
 
 And the variant with contact at the particle's surface (-surfaceContact),
-on the same criteria where they are not the measurements' (it sits above
-them near the onset: README), and:
+on the same criteria but the yardstick (the measurements and Vasquez et
+al.: it sits above them near the onset, README) and the golden tables,
+and:
 - no fallback: every contact is the surface's, none the centre's;
 - per Stokes number stick walls capture at least the parcels they capture
   with contact at the centre: the paths are the same up to the first
@@ -72,9 +73,10 @@ def surface_results(surface_case):
 
 # Tests run on both variants take the fixtures' names
 VARIANTS = [("case", "results"), ("surface_case", "surface_results")]
+CONTACTS = ["centre", "surface"]
 
 
-@pytest.mark.parametrize("case_name", [v[0] for v in VARIANTS])
+@pytest.mark.parametrize("case_name", [v[0] for v in VARIANTS], ids=CONTACTS)
 def test_runs_cleanly(request, case_name):
     case = request.getfixturevalue(case_name)
     assert fatal_logs(case) == []
@@ -85,14 +87,14 @@ def test_runs_cleanly(request, case_name):
         assert os.path.exists(os.path.join(case, name)), name
 
 
-@pytest.mark.parametrize("results_name", [v[1] for v in VARIANTS])
+@pytest.mark.parametrize("results_name", [v[1] for v in VARIANTS], ids=CONTACTS)
 def test_every_stokes_number_of_each_wall_model(request, results_name):
     results = request.getfixturevalue(results_name)
     for model in bend.MODELS:
         assert list(results.where(model=model)["Stk"]) == STOKES
 
 
-@pytest.mark.parametrize("variant", VARIANTS)
+@pytest.mark.parametrize("variant", VARIANTS, ids=CONTACTS)
 @pytest.mark.parametrize("model", bend.MODELS)
 def test_nothing_lost(request, variant, model):
     case, results = map(request.getfixturevalue, variant)
@@ -123,7 +125,7 @@ def test_stick_walls_within_the_yardstick(case, results):
     assert failed == []
 
 
-@pytest.mark.parametrize("results_name", [v[1] for v in VARIANTS])
+@pytest.mark.parametrize("results_name", [v[1] for v in VARIANTS], ids=CONTACTS)
 def test_bounce_only_lowers_deposition(request, results_name):
     results = request.getfixturevalue(results_name)
     stick = results.where(model="stick")

@@ -109,8 +109,9 @@ TEST(Plausibility, TheValueMeantIsTheDecimalOne)
 
 TEST(Plausibility, TheCallerSaysHowToTakeAValueAsGiven)
 {
-    // The core's message ends at the value meant: the keyword or option
-    // that takes the value as given is the adapter's and the tools' to name
+    // The core's message ends where the caller's hint goes (here at the
+    // value meant): the keyword or option that takes the value as given is
+    // the adapter's and the tools' to name
     const std::string e = stops(magnitude::youngsModulus, "E", 320);
     ASSERT_FALSE(e.empty());
     EXPECT_EQ(e.back(), '?') << e;
