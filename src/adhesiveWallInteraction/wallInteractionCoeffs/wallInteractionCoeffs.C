@@ -88,8 +88,8 @@ boolList readRecordedPatches
     const label maxImpactRecords
 )
 {
-    const char* form = "a list of patch names, regular expressions or groups"
-        " such as (fibre \"(inlet|outlet)\")";
+    const char* form = "a list of one or more patch names, regular"
+        " expressions or groups such as (fibre \"(inlet|outlet)\")";
     boolList recorded(patches.size(), true);
     const entry* e = checkedInput::find(coeffs, "recordPatches");
     if (!e)
@@ -100,16 +100,19 @@ boolList readRecordedPatches
     {
         return t.isPunctuation() && t.pToken() == c;
     };
+    // ( name "regex" ... ), at least one, checked token by token before
+    // OpenFOAM's list reader sees it
     label i = e->isDict() ? -1 : checkedInput::listStart(e->stream());
     bool good = i >= 0;
     if (good)
     {
         const ITstream& tokens = e->stream();
-        for (++i; good && i + 1 < tokens.size(); ++i)
+        const label first = ++i;
+        for (; good && i + 1 < tokens.size(); ++i)
         {
             good = tokens[i].isWord() || tokens[i].isString();
         }
-        good = good && i + 1 == tokens.size()
+        good = good && i > first && i + 1 == tokens.size()
          && isPunctuation(tokens[i], token::END_LIST);
     }
     if (!good)
