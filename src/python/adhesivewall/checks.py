@@ -1522,6 +1522,9 @@ def _settling_velocity(case, rho_c, mu, g, lam, coefficients="Davies",
     rho = lagrangian_values(os.path.join(folder, "rho"))
     if not U:
         raise CheckError(f"{folder}: no parcels")
+    if not len(U) == len(d) == len(rho):
+        raise CheckError(f"{folder}: {len(U)} velocities, {len(d)} "
+                         f"diameters and {len(rho)} densities")
     problems = []
     for u, di, rhoi in zip(U, d, rho):
         v = aerosol.settling_velocity(
