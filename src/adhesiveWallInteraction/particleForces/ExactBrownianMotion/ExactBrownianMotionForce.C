@@ -160,9 +160,10 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
         checkCloud(trackTime);
     }
 
+    // tTurb: the count of draws, and a half when the last is pending
     scalar& draws = compat::brownianDraws(p);
     vector& V0 = compat::brownianVelocity(p);
-    if (!(draws >= 0) || draws != std::floor(draws))
+    if (!(draws >= 0) || 2*draws != std::floor(2*draws))
     {
         FatalErrorInFunction
             << "exactBrownianMotion: parcel " << p.origId() << " of "
@@ -170,7 +171,8 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
             << ", not a count of Brownian draws (was the case run with a "
             << "dispersion model?)" << nl << exit(FatalError);
     }
-    const std::uint64_t count = static_cast<std::uint64_t>(draws);
+    std::uint64_t count = static_cast<std::uint64_t>(draws);
+    const bool pending = draws != std::floor(draws);
 
     // The Brownian velocity held over this step: the current draw's
     // displacement over the step (none before the first draw)
@@ -178,6 +180,22 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
     vector V(Zero);
     if (count > 0)
     {
+        vector X;
+        drawStep(p, count - 1, V0, tau, thermalVariance, X, V);
+        W = X/drawTrackTime_;
+    }
+
+    // The draw of the step that ended is taken into the state in the
+    // sub-step that starts the next: not when the step was completed, as
+    // a contact at the surface can take the parcel back into that step,
+    // which it then completes again (one transition a step either way)
+    const bool startsStep =
+        p.stepFraction() - dt/trackTime < 1e-9 && dt > 1e-9*trackTime;
+    if (pending && startsStep)
+    {
+        V0 = V;
+        ++count;
+        draws = count;
         vector X;
         drawStep(p, count - 1, V0, tau, thermalVariance, X, V);
         W = X/drawTrackTime_;
@@ -198,8 +216,7 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
         drawStep(p, count, V, tau, thermalVariance, Xnext, Vnext);
         const scalar dtEff = this->owner().UIntegrator().dtEff(dt, Sp/massEff);
         value.Su() += massEff*(Xnext/drawTrackTime_ - W)/dtEff;
-        V0 = V;
-        draws = count + 1;
+        draws = count + 0.5;
     }
     return value;
 }
