@@ -112,8 +112,10 @@ boolList readRecordedPatches
         {
             good = tokens[i].isWord() || tokens[i].isString();
         }
+        // With OpenFOAM's size prefix, N(a b c), N the number of names
         good = good && i > first && i + 1 == tokens.size()
-         && isPunctuation(tokens[i], token::END_LIST);
+         && isPunctuation(tokens[i], token::END_LIST)
+         && (first == 1 || tokens[0].labelToken() == i - first);
     }
     if (!good)
     {
@@ -135,10 +137,15 @@ boolList readRecordedPatches
     recorded = false;
     for (const keyType& key : List<keyType>(e->stream()))
     {
+        // Not the processor patches, which differ between processors
         bool matched = false;
         forAll(patches, patchi)
         {
-            if (wallInteractionEntryList::matches(key, patches[patchi]))
+            if
+            (
+                patches[patchi].type.compare(0, 9, "processor") != 0
+             && wallInteractionEntryList::matches(key, patches[patchi])
+            )
             {
                 recorded[patchi] = matched = true;
             }

@@ -108,6 +108,27 @@ void Foam::ExactBrownianMotionForce<CloudType>::checkCloud
                     << "twice (select one)" << nl << exit(FatalError);
             }
         }
+    }
+
+    // Moved in sub-cycles of the time step (a colliding cloud's collision
+    // subCycles): a sub-cycle would complete the step of the draws
+    const scalar moved = this->owner().db().time().deltaTValue();
+    if
+    (
+        this->owner().solution().transient()
+     && mag(moved - trackTime) > 1e-12*trackTime
+    )
+    {
+        FatalErrorInFunction
+            << "exactBrownianMotion: the parcels are moved over " << moved
+            << " s at a time, not over the cloud's time step " << trackTime
+            << " s: the collision model moves them in sub-cycles, and the"
+            << " Brownian step is drawn for whole time steps (use"
+            << " collisionModel none)" << nl
+            << exit(FatalError);
+    }
+    if (drawTrackTime_ < 0)
+    {
         drawTrackTime_ = trackTime;
     }
     else if (mag(trackTime - drawTrackTime_) > 1e-12*drawTrackTime_)
@@ -160,10 +181,12 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
         checkCloud(trackTime);
     }
 
-    // tTurb: the count of draws, and a half when the last is pending
+    // tTurb: the count n of draws taken into the state, or -(n + 1) when
+    // the draw n is pending (whole numbers: exact at any writePrecision up
+    // to a million steps)
     scalar& draws = compat::brownianDraws(p);
     vector& V0 = compat::brownianVelocity(p);
-    if (!(draws >= 0) || 2*draws != std::floor(2*draws))
+    if (!std::isfinite(draws) || draws != std::floor(draws))
     {
         FatalErrorInFunction
             << "exactBrownianMotion: parcel " << p.origId() << " of "
@@ -171,8 +194,9 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
             << ", not a count of Brownian draws (was the case run with a "
             << "dispersion model?)" << nl << exit(FatalError);
     }
-    std::uint64_t count = static_cast<std::uint64_t>(draws);
-    const bool pending = draws != std::floor(draws);
+    const bool pending = draws < 0;
+    std::uint64_t count =
+        static_cast<std::uint64_t>(pending ? -draws - 1 : draws);
 
     // The Brownian velocity held over this step: the current draw's
     // displacement over the step (none before the first draw)
@@ -189,8 +213,7 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
     // sub-step that starts the next: not when the step was completed, as
     // a contact at the surface can take the parcel back into that step,
     // which it then completes again (one transition a step either way)
-    const bool startsStep =
-        p.stepFraction() - dt/trackTime < 1e-9 && dt > 1e-9*trackTime;
+    const bool startsStep = p.stepFraction() - dt/trackTime < 1e-9;
     if (pending && startsStep)
     {
         V0 = V;
@@ -216,7 +239,7 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
         drawStep(p, count, V, tau, thermalVariance, Xnext, Vnext);
         const scalar dtEff = this->owner().UIntegrator().dtEff(dt, Sp/massEff);
         value.Su() += massEff*(Xnext/drawTrackTime_ - W)/dtEff;
-        draws = count + 0.5;
+        draws = -scalar(count) - 1;
     }
     return value;
 }
