@@ -283,7 +283,8 @@ brachDunn::ImpactFitSettings fitSettings(const argList& args)
             std::tuple{"rho", s.rho, &brachDunn::magnitude::density}
         })
     {
-        if (tools::found(args, option) && !(materials.rho && option == word("rho")))
+        const bool checkedWithCase = materials.rho && option == word("rho");
+        if (tools::found(args, option) && !checkedWithCase)
         {
             tools::checkMagnitude
             (
