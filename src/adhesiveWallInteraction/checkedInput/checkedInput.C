@@ -249,6 +249,42 @@ Foam::scalarList Foam::checkedInput::readNumbers
 }
 
 
+Foam::List<Foam::keyType> Foam::checkedInput::readKeys
+(
+    const dictionary& dict,
+    const word& keyword,
+    const std::string& expected
+)
+{
+    const entry* e = find(dict, keyword);
+    if (!e)
+    {
+        return List<keyType>();
+    }
+    const ITstream& tokens = tokensOf(dict, *e, expected.c_str());
+    // (a "b.*" c), or with OpenFOAM's size prefix: N(...), checked token by
+    // token before OpenFOAM's list reader sees them
+    const label first = listStart(tokens);
+    bool good =
+        first >= 0
+     && tokens.size() >= first + 2
+     && isPunctuation(tokens[tokens.size() - 1], token::END_LIST);
+    for (label i = first + 1; good && i < tokens.size() - 1; ++i)
+    {
+        good = tokens[i].isWord() || tokens[i].isString();
+    }
+    if
+    (
+        !good
+     || (first && tokens[0].labelToken() != tokens.size() - first - 2)
+    )
+    {
+        fail(dict, keyword, entryText(*e), "must be " + expected);
+    }
+    return List<keyType>(e->stream());
+}
+
+
 Foam::label Foam::checkedInput::readCount
 (
     const dictionary& dict,

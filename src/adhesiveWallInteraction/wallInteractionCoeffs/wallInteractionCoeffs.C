@@ -88,7 +88,7 @@ boolList readRecordedPatches
     const label maxImpactRecords
 )
 {
-    const char* form = "a list of one or more patch names, regular"
+    const std::string form = "a list of one or more patch names, regular"
         " expressions or groups such as (fibre \"(inlet|outlet)\")";
     boolList recorded(patches.size(), true);
     const entry* e = checkedInput::find(coeffs, "recordPatches");
@@ -96,33 +96,16 @@ boolList readRecordedPatches
     {
         return recorded;
     }
-    const auto isPunctuation = [](const token& t, const char c)
-    {
-        return t.isPunctuation() && t.pToken() == c;
-    };
-    // ( name "regex" ... ), at least one, checked token by token before
-    // OpenFOAM's list reader sees it
-    label i = e->isDict() ? -1 : checkedInput::listStart(e->stream());
-    bool good = i >= 0;
-    if (good)
-    {
-        const ITstream& tokens = e->stream();
-        const label first = ++i;
-        for (; good && i + 1 < tokens.size(); ++i)
-        {
-            good = tokens[i].isWord() || tokens[i].isString();
-        }
-        // With OpenFOAM's size prefix, N(a b c), N the number of names
-        good = good && i > first && i + 1 == tokens.size()
-         && isPunctuation(tokens[i], token::END_LIST)
-         && (first == 1 || tokens[0].labelToken() == i - first);
-    }
-    if (!good)
+    const List<keyType> keys
+    (
+        checkedInput::readKeys(coeffs, "recordPatches", form)
+    );
+    if (keys.empty())
     {
         checkedInput::fail
         (
             coeffs, "recordPatches", checkedInput::entryText(*e),
-            std::string("must be ") + form
+            "must be " + form
         );
     }
     if (maxImpactRecords == 0)
@@ -135,7 +118,7 @@ boolList readRecordedPatches
         );
     }
     recorded = false;
-    for (const keyType& key : List<keyType>(e->stream()))
+    for (const keyType& key : keys)
     {
         // Not the processor patches, which differ between processors
         bool matched = false;
