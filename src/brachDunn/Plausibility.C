@@ -3,6 +3,7 @@
 
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 namespace brachDunn
 {
@@ -10,39 +11,72 @@ namespace brachDunn
 namespace
 {
 
-//- "did you mean 3.2e+11 (320 GPa)?" for the first unit in which the value
-//  lands in the model's range, else in the physical range, else nothing
+//- The value in SI units had it been typed in the slip's unit (the
+//  decimal text with the exponent added, read back: the number meant,
+//  correctly rounded, 4.9 um is 4.9e-06 m; strtod: a result beyond the
+//  doubles is no error here), plus the unit's offset
+double inSI(const double value, const Magnitude::Slip& slip)
+{
+    if (slip.offset != 0)
+    {
+        return value + slip.offset;
+    }
+    const std::string text = toText(value);
+    const auto e = text.find('e');
+    const int exponent =
+        slip.exponent
+      + (e == std::string::npos ? 0 : std::stoi(text.substr(e + 1)));
+    return std::strtod
+    (
+        (text.substr(0, e) + "e" + std::to_string(exponent)).c_str(),
+        nullptr
+    );
+}
+
+
+//- "did you mean 3.2e+11 (320 GPa)?" for the first units (in the slips'
+//  order, the likelier first; as many as the magnitude's suggestions) in
+//  which the value lands in the model's range, else the first in which it
+//  lands in the physical range, else nothing. A likelier unit in which it
+//  lands in the physical range only is named first: a diameter of 150 is
+//  150 um (beyond the model's range) as likely as 150 nm
 std::string meant(const Magnitude& m, const double value)
 {
-    for (const bool strict : {true, false})
+    std::vector<const Magnitude::Slip*> named;
+    const Magnitude::Slip* physical = nullptr;
+    for (const Magnitude::Slip& slip : m.slips)
     {
-        for (const Magnitude::Slip& slip : m.slips)
+        if (slip.exponent == 0 && slip.offset == 0)
         {
-            // The value's decimal text with the exponent added, read back:
-            // the number meant, correctly rounded (4.9 um is 4.9e-06 m)
-            const std::string text = toText(value);
-            const auto e = text.find('e');
-            const int exponent =
-                slip.exponent
-              + (e == std::string::npos ? 0 : std::stoi(text.substr(e + 1)));
-            // (strtod: a result beyond the doubles is no error here)
-            const double si = std::strtod
-            (
-                (text.substr(0, e) + "e" + std::to_string(exponent)).c_str(),
-                nullptr
-            );
-            const bool inside =
-                strict
-              ? si >= m.validFrom && si <= m.validTo
-              : si >= m.mistakeBelow && si <= m.mistakeAbove;
-            if (slip.exponent != 0 && inside)
-            {
-                return "; did you mean " + toText(si) + " (" + toText(value)
-                  + " " + slip.unit + ")?";
-            }
+            continue;
+        }
+        const double si = inSI(value, slip);
+        if
+        (
+            si >= m.validFrom && si <= m.validTo
+         && int(named.size()) < m.suggestions
+        )
+        {
+            named.push_back(&slip);
+        }
+        if (!physical && si >= m.mistakeBelow && si <= m.mistakeAbove)
+        {
+            physical = &slip;
         }
     }
-    return "";
+    if (physical && (named.empty() || physical < named.front()))
+    {
+        named.insert(named.begin(), physical);
+    }
+    std::string text;
+    for (std::size_t i = 0; i < named.size(); ++i)
+    {
+        text +=
+            std::string(i == 0 ? "; did you mean " : " or ")
+          + toText(inSI(value, *named[i])) + " (" + toText(value) + " "
+          + named[i]->unit + ")";
+    }
+    return text.empty() ? text : text + "?";
 }
 
 } // End anonymous namespace

@@ -80,6 +80,8 @@ struct inputCase
         {"ceiling", "wall", {"wall"}, true, false},
         {"sides", "wall", {"wall"}, true, false}
     };
+    //- A colliding cloud's youngsModulus [Pa]
+    double collidingE = 1.2e9;
 };
 
 
@@ -246,10 +248,19 @@ bool readCoefficients(const inputCase& c, std::string& message)
     {
         k.apply(e);
     }
-    std::optional<brachDunn::ElasticMaterial> cloudParticle;
+    // A colliding cloud's constantProperties, named as in a case
+    dictionary constantProperties;
+    constantProperties.name() =
+        "constant/kinematicCloudProperties.constantProperties";
+    constantProperties.add("youngsModulus", c.collidingE);
+    constantProperties.add("poissonsRatio", 0.33);
+    std::optional<wallInteractionCoeffs::cloudParticle> cloudParticle;
     if (c.colliding)
     {
-        cloudParticle = brachDunn::ElasticMaterial{1.2e9, 0.33};
+        cloudParticle = wallInteractionCoeffs::cloudParticle
+        {
+            {c.collidingE, 0.33}, &constantProperties
+        };
     }
     try
     {
@@ -420,6 +431,18 @@ std::vector<inputCase> cases()
             {"keyword 'gamma' = 50", "did you mean 0.05 (50 mJ/m^2)"}},
         {"powerLawCInMilli", {set("floor", "adhesion { type powerLaw; c 340; n 0.5; }")},
             {"keyword 'c' = 340", "did you mean 0.34 (340 mJ/m^2)"}},
+        {"collidingYoungsModulusInGPa", {remove("", "particle")},
+            {"keyword 'youngsModulus' = 60", "did you mean 6e+10 (60 GPa)",
+             "constantProperties", "extremeValues yes in adhesiveWallInteractionCoeffs"},
+            true,
+            {
+                {"floor", "wall", {"wall"}, true, false},
+                {"ceiling", "wall", {"wall"}, true, false},
+                {"sides", "wall", {"wall"}, true, false}
+            },
+            60},
+        {"sizeClassesInMicrometres", {set("", "sizeClasses (2 5)")},
+            {"keyword 'sizeClasses' = 2", "did you mean 2e-06 (2 um)"}},
         {"validExtremeValues", {set("", "extremeValues yes"), set("floor", "E 320")}, {}},
         {"extremeValuesWord", {set("", "extremeValues maybe")},
             {"keyword 'extremeValues' = maybe", "must be yes or no"}},

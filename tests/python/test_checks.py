@@ -792,3 +792,32 @@ def test_deposit_cost_line():
     assert "medians 5.00 s without, 5.50 s with" in line
     with pytest.raises(checks.CheckError):
         checks.deposit_cost_line(0, 50, [1.0], [1.0])
+
+
+def test_grade_efficiency_check_needs_every_impact_recorded(tmp_path):
+    # The check counts captures and escapes from impacts.csv: a case that
+    # records only some patches, or a file capped at maxImpactRecords,
+    # cannot be counted, and says so instead of reporting mismatches
+    folder = tmp_path / "postProcessing/lagrangian/kinematicCloud" \
+        / "adhesiveWallInteraction/0"
+    folder.mkdir(parents=True)
+    (folder / "gradeEfficiency.dat").write_text(
+        "# time\tinjector\tdMin\tdMax\tinjectedParcels\n1\tall\t0\tinf\t1\n")
+    records = folder / "impacts.csv"
+    records.write_text("time,patch,diameter,nParticle,outcome\n")
+    constant = tmp_path / "constant"
+    constant.mkdir()
+    properties = constant / "kinematicCloudProperties"
+    coeffs = ("subModels { adhesiveWallInteractionCoeffs "
+              "{ recordPatches (floor); } }\n")
+    properties.write_text(HEADER % ("dictionary", "kinematicCloudProperties")
+                          + coeffs)
+    with pytest.raises(CheckError, match="recordPatches"):
+        checks.expected_grade_efficiency(str(tmp_path))
+    properties.write_text(HEADER % ("dictionary", "kinematicCloudProperties")
+                          + coeffs.replace("recordPatches (floor);", ""))
+    records.write_text("time,patch,diameter,nParticle,outcome\n"
+                       "1,floor,1e-06,1,capture\n"
+                       "# capped at maxImpactRecords = 1\n")
+    with pytest.raises(CheckError, match="capped"):
+        checks.expected_grade_efficiency(str(tmp_path))

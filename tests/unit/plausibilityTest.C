@@ -107,6 +107,59 @@ TEST(Plausibility, TheValueMeantIsTheDecimalOne)
 }
 
 
+TEST(Plausibility, AnAmbiguousDiameterNamesBothUnits)
+{
+    // 150 is 1.5e-4 m in um (a physical diameter beyond the model's range,
+    // and the likelier unit) or 1.5e-7 m in nm (inside it): both are named,
+    // the likelier first
+    EXPECT_TRUE(has(stops(magnitude::diameter, "maxDiameter", 150),
+        "did you mean 0.00015 (150 um) or 1.5e-07 (150 nm)?"))
+        << stops(magnitude::diameter, "maxDiameter", 150);
+    // Where the likelier unit lands in the model's range, it alone
+    EXPECT_TRUE(has(stops(magnitude::diameter, "d", 20), "did you mean 2e-05 (20 um)?"));
+    EXPECT_TRUE(has(stops(magnitude::youngsModulus, "E", 320), "did you mean 3.2e+11 (320 GPa)?"));
+}
+
+
+TEST(Plausibility, TheGasState)
+{
+    // A temperature typed in degrees Celsius (an offset, not a power of
+    // ten): 20 degC is 293.15 K
+    EXPECT_TRUE(has(stops(magnitude::temperature, "T", 20),
+        "T = 20: a gas temperature in K; 20 K is colder than any gas carrying"
+        " aerosols (air liquefies at 79-82 K); did you mean 293.15 (20 degC)?"))
+        << stops(magnitude::temperature, "T", 20);
+    EXPECT_EQ(stops(magnitude::temperature, "T", 293.15), "");
+    EXPECT_EQ(stops(magnitude::temperature, "T", 100), "");
+    EXPECT_NE(stops(magnitude::temperature, "T", 99), "");
+    EXPECT_NE(stops(magnitude::temperature, "T", 2e4), "");
+    // The atmosphere in bar or in kPa: both landing in the range, both named
+    EXPECT_TRUE(has(stops(magnitude::pressure, "p", 1.01325),
+        "did you mean 101325 (1.01325 bar) or 1013.25 (1.01325 kPa)?"))
+        << stops(magnitude::pressure, "p", 1.01325);
+    EXPECT_TRUE(has(stops(magnitude::pressure, "p", 101.325),
+        "101325 (101.325 kPa)"));
+    EXPECT_EQ(stops(magnitude::pressure, "p", 101325), "");
+    EXPECT_EQ(stops(magnitude::pressure, "p", 1e3), "");
+    EXPECT_NE(stops(magnitude::pressure, "p", 999), "");
+    EXPECT_NE(stops(magnitude::pressure, "p", 2e8), "");
+    // Air's mean free path at 1 atm, 66.5 nm, typed in nm or um
+    EXPECT_TRUE(has(stops(magnitude::meanFreePath, "meanFreePath", 66.5),
+        "did you mean 6.65e-08 (66.5 nm)?"));
+    EXPECT_TRUE(has(stops(magnitude::meanFreePath, "meanFreePath", 0.0665),
+        "did you mean 6.65e-08 (0.0665 um)?"));
+    EXPECT_EQ(stops(magnitude::meanFreePath, "meanFreePath", 66.5e-9), "");
+    EXPECT_NE(stops(magnitude::meanFreePath, "meanFreePath", 2e-5), "");
+    // Air's molar mass typed in g/mol
+    EXPECT_TRUE(has(stops(magnitude::molarMass, "molarMass", 28.96),
+        "did you mean 0.02896 (28.96 g/mol)?"));
+    EXPECT_EQ(stops(magnitude::molarMass, "molarMass", 0.0289647), "");
+    // None of them warns inside its physical range (no model's range)
+    EXPECT_EQ(checkMagnitude(magnitude::temperature, "T", 150), "");
+    EXPECT_EQ(checkMagnitude(magnitude::pressure, "p", 5e7), "");
+}
+
+
 TEST(Plausibility, TheCallerSaysHowToTakeAValueAsGiven)
 {
     // The core's message ends where the caller's hint goes (here at the

@@ -12,6 +12,7 @@ namespace
 {
 
 using namespace Foam;
+using checkedInput::isPunctuation;
 
 //- The tokens of a primitive entry; a dictionary is an error
 const ITstream& tokensOf
@@ -30,13 +31,6 @@ const ITstream& tokensOf
         );
     }
     return e.stream();
-}
-
-
-//- The token is the punctuation c
-bool isPunctuation(const token& t, const char c)
-{
-    return t.isPunctuation() && t.pToken() == c;
 }
 
 
@@ -128,6 +122,12 @@ std::string Foam::checkedInput::entryText(const entry& e)
 }
 
 
+bool Foam::checkedInput::isPunctuation(const token& t, const char c)
+{
+    return t.isPunctuation() && t.pToken() == c;
+}
+
+
 Foam::label Foam::checkedInput::listStart(const ITstream& tokens)
 {
     const label first = tokens.size() && tokens[0].isLabel() ? 1 : 0;
@@ -169,7 +169,8 @@ std::string Foam::checkedInput::checkMagnitude
     const std::string& keyword,
     const scalar value,
     const brachDunn::Magnitude& m,
-    const bool extreme
+    const bool extreme,
+    const std::string& takenBy
 )
 {
     try
@@ -180,9 +181,8 @@ std::string Foam::checkedInput::checkMagnitude
     {
         fail
         (
-            dict, err.keyword(), err.value(), err.requirement()
-          + " (extremeValues yes in adhesiveWallInteractionCoeffs takes it"
-            " as given)"
+            dict, err.keyword(), err.value(),
+            err.requirement() + " (" + takenBy + " takes it as given)"
         );
     }
 }

@@ -28,10 +28,7 @@ PtrList<entry> patchEntries(const dictionary& coeffs)
     }
     // ( name { ... } name { ... } ), checked token by token before
     // OpenFOAM's list reader sees it
-    const auto isPunctuation = [](const token& t, const char c)
-    {
-        return t.isPunctuation() && t.pToken() == c;
-    };
+    using checkedInput::isPunctuation;
     bool good = !e->isDict();
     label i = good ? checkedInput::listStart(e->stream()) : -1;
     good = i >= 0;

@@ -164,7 +164,7 @@ const Foam::wallInteractionCoeffs::particleConstants&
 Foam::wallInteractionCoeffs::particle
 (
     const dictionary& coeffs,
-    const std::optional<brachDunn::ElasticMaterial>& cloudParticle
+    const std::optional<cloudParticle>& cloudParticle
 )
 {
     if (particle_)
@@ -188,15 +188,30 @@ Foam::wallInteractionCoeffs::particle
     }
     else if (cloudParticle)
     {
-        checkedInput::coreCall(coeffs, [&]{ cloudParticle->check(); });
+        // Named as the cloud's constantProperties name them
+        const dictionary& props = *cloudParticle->constantProperties;
+        try
+        {
+            cloudParticle->material.check();
+        }
+        catch (const brachDunn::InputError& err)
+        {
+            checkedInput::fail
+            (
+                props,
+                err.keyword() == "E" ? "youngsModulus" : "poissonsRatio",
+                err.value(), err.requirement()
+            );
+        }
         magnitudes_.check
         (
-            coeffs, "constantProperties youngsModulus", cloudParticle->E,
+            props, "youngsModulus", cloudParticle->material.E,
             brachDunn::magnitude::youngsModulus
         );
         particle_ = particleConstants
         {
-            *cloudParticle, "constantProperties youngsModulus, poissonsRatio"
+            cloudParticle->material,
+            "constantProperties youngsModulus, poissonsRatio"
         };
     }
     else
@@ -219,7 +234,7 @@ Foam::wallInteractionCoeffs::wallInteractionCoeffs
 (
     const dictionary& coeffs,
     const UList<wallInteractionEntryList::patch>& patches,
-    const std::optional<brachDunn::ElasticMaterial>& cloudParticle,
+    const std::optional<cloudParticle>& cloudParticle,
     const wordList& baseKeywords
 )
 :
@@ -244,6 +259,15 @@ Foam::wallInteractionCoeffs::wallInteractionCoeffs
         magnitudes_
     )
 {
+    // Size classes typed in um (2 for 2e-6) would put every parcel in one
+    for (const scalar edge : sizeClassEdges_)
+    {
+        magnitudes_.check
+        (
+            coeffs, "sizeClasses", edge, brachDunn::magnitude::diameter
+        );
+    }
+
     // A particle given but not used is still checked
     if (checkedInput::find(coeffs, "particle"))
     {

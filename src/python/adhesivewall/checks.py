@@ -570,15 +570,33 @@ def expected_grade_efficiency(case=".", start_time="0",
     (impacts.csv), airborne
     from the cloud's lagrangian files at the last written time (active
     parcels), removed as the rest. {(dMin, dMax): {quantity: [parcels,
-    particles, mass]}}, the classes those of the file."""
+    particles, mass]}}, the classes those of the file. A CheckError where
+    the records cannot hold every impact: recordPatches in the model's
+    coefficients, or a file capped at maxImpactRecords."""
     from . import statistics, tables
-    grade = tables.read(os.path.join(
-        statistics.output_folder(case, cloud, start_time),
-        "gradeEfficiency.dat")).last_time()
+    folder = statistics.output_folder(case, cloud, start_time)
+    grade = tables.read(os.path.join(folder,
+                                     "gradeEfficiency.dat")).last_time()
     classes = list(zip(grade["dMin"], grade["dMax"]))
     edges = sorted({hi for _, hi in classes if math.isfinite(hi)})
-    rho = number(foam.value("constant/kinematicCloudProperties",
-                            "constantProperties/rho0", case=case), "rho0")
+    properties = f"constant/{cloud}Properties"
+    try:
+        foam.value(properties,
+                   "subModels/adhesiveWallInteractionCoeffs/recordPatches",
+                   case=case)
+    except RuntimeError:
+        pass
+    else:
+        raise CheckError(f"{case}: recordPatches in {properties}: "
+                         "impacts.csv holds only those patches' impacts, "
+                         "and the grade efficiency cannot be counted from it")
+    with open(os.path.join(folder, "impacts.csv")) as f:
+        if any(line.startswith("# capped") for line in f):
+            raise CheckError(f"{case}: impacts.csv is capped at "
+                             "maxImpactRecords, and the grade efficiency "
+                             "cannot be counted from it")
+    rho = number(foam.value(properties, "constantProperties/rho0",
+                            case=case), "rho0")
     counts = {c: {q: [0.0, 0.0, 0.0] for q in QUANTITIES} for c in classes}
 
     def add(quantity, d, n, parcels=1):
@@ -595,8 +613,7 @@ def expected_grade_efficiency(case=".", start_time="0",
         positions = len(foam.list_file(os.path.join(
             case, "constant", injector["positionsFile"])))
         add("injected", d, number(injector["nParticle"]), positions)
-    records = tables.read(os.path.join(
-        statistics.output_folder(case, cloud, start_time), "impacts.csv"))
+    records = tables.read(os.path.join(folder, "impacts.csv"))
     for outcome, quantity, sign in (("capture", "captured", 1),
                                     ("escape", "escaped", 1),
                                     ("resuspension", "captured", -1)):

@@ -30,7 +30,7 @@ Foam::ExactBrownianMotionForce<CloudType>::ExactBrownianMotionForce
 {
     checkedInput::requireKnownKeywords
     (
-        this->coeffs(), {"T", "seed"}, "exactBrownianMotion"
+        this->coeffs(), {"T", "seed", "extremeValues"}, "exactBrownianMotion"
     );
 }
 

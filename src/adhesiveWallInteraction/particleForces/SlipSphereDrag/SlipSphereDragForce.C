@@ -26,7 +26,10 @@ Foam::SlipSphereDragForce<CloudType>::SlipSphereDragForce
     checkedInput::requireKnownKeywords
     (
         coeffs,
-        {"slipCoefficients", "meanFreePath", "p", "T", "molarMass"},
+        {
+            "slipCoefficients", "meanFreePath", "p", "T", "molarMass",
+            "extremeValues"
+        },
         "slipSphereDrag"
     );
     if (meanFreePath_.given < 0)

@@ -1,6 +1,7 @@
 // adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 #include "gasState.H"
 #include "checkedInput.H"
+#include "Plausibility.H"
 
 namespace
 {
@@ -19,6 +20,34 @@ Foam::scalar readPositive
             dict, keyword, Foam::checkedInput::entryText(*Foam::checkedInput::find(dict, keyword)),
             "must be > 0"
         );
+    }
+    return value;
+}
+
+
+//- A positive value of the gas's state; one that can only be a unit
+//  mistake stops the run unless the force's extremeValues takes it (then,
+//  as the model's, it is warned about)
+Foam::scalar readGasValue
+(
+    const Foam::dictionary& dict,
+    const Foam::word& keyword,
+    const brachDunn::Magnitude& m
+)
+{
+    using namespace Foam;
+    const scalar value = readPositive(dict, keyword);
+    const std::string warning = checkedInput::checkMagnitude
+    (
+        dict, keyword, value, m,
+        checkedInput::readSwitch(dict, "extremeValues", false),
+        "extremeValues yes in " + dict.dictName()
+    );
+    if (!warning.empty())
+    {
+        WarningInFunction
+            << "In dictionary " << dict.name() << ": " << warning.c_str()
+            << endl;
     }
     return value;
 }
@@ -55,7 +84,7 @@ Foam::scalar Foam::aerosolForces::readTemperature
             "carrier temperature"
         );
     }
-    return readPositive(dict, "T");
+    return readGasValue(dict, "T", brachDunn::magnitude::temperature);
 }
 
 
@@ -87,14 +116,20 @@ Foam::aerosolForces::readMeanFreePath(const dictionary& dict)
     }
     if (given)
     {
-        source.given = readPositive(dict, "meanFreePath");
+        source.given = readGasValue
+        (
+            dict, "meanFreePath", brachDunn::magnitude::meanFreePath
+        );
     }
     else
     {
-        source.p = readPositive(dict, "p");
+        source.p = readGasValue(dict, "p", brachDunn::magnitude::pressure);
         if (checkedInput::find(dict, "molarMass"))
         {
-            source.molarMass = readPositive(dict, "molarMass");
+            source.molarMass = readGasValue
+            (
+                dict, "molarMass", brachDunn::magnitude::molarMass
+            );
         }
     }
     return source;
