@@ -299,3 +299,31 @@ def test_stokes_einstein_is_the_einstein_relation():
     mobility = slip / (3 * math.pi * mu * d)
     assert c.stokes_einstein(d, T, mu, slip) == pytest.approx(
         c.BOLTZMANN * T * mobility, rel=1e-15)
+
+
+@pytest.mark.parametrize("profile", [
+    lambda s: 1.0,                      # plug flow
+    lambda s: 6 * s * (1 - s),          # Poiseuille
+    lambda s: 3 * s * s,                # sheared towards the top
+])
+def test_settling_channel_against_trajectories(profile):
+    # Parcels entering at heights spread over the flux, each followed down
+    # at v_s across the profile (trapezoidal steps of its height): the
+    # share that reaches the floor within L is v_s L/(U H) for any profile
+    H, L, U, vs = 1e-3, 0.02, 0.1, 1.2e-3
+    n, steps = 2000, 400
+    heights = [H * (i + 0.5) / n for i in range(n)]
+    flux = [U * profile(y / H) for y in heights]
+
+    def reach(y0):
+        # x travelled while settling from y0 to the floor: int u dy / v_s
+        ys = [y0 * k / steps for k in range(steps + 1)]
+        us = [U * profile(y / H) for y in ys]
+        return sum((us[k] + us[k + 1]) / 2 * (ys[k + 1] - ys[k])
+                   for k in range(steps)) / vs
+    deposited = sum(f for y, f in zip(heights, flux) if reach(y) <= L)
+    expected = c.settling_channel(vs, L, U, H)
+    assert deposited / sum(flux) == pytest.approx(expected, abs=2e-3)
+    assert c.settling_channel(10 * vs, L, U, H) == 1.0
+    with pytest.raises(ValueError):
+        c.settling_channel(vs, L, 0.0, H)

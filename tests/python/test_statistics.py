@@ -28,12 +28,21 @@ def stats(tmp_path):
 
 
 def test_size_classes_of_every_patch(stats):
-    classes = statistics.size_classes(stats)
+    classes = statistics.size_classes(stats, ["floor", "walls", "outlet"])
     assert classes.text("dMin") == ["0", "2e-06"]
     assert list(classes["impactParticles"]) == [13, 8]
     assert list(classes["captureParticles"]) == [4, 7]
     assert list(classes["escapeParticles"]) == [1, 0]
     assert list(classes["captureFraction"]) == pytest.approx([4 / 13, 7 / 8])
+
+
+def test_size_classes_of_the_walls_by_default(stats):
+    # The outlet's escapes are no wall's impacts: left out unless named
+    assert statistics.walls(stats) == ["floor", "walls"]
+    classes = statistics.size_classes(stats)
+    assert list(classes["impactParticles"]) == [12, 8]
+    assert list(classes["escapeParticles"]) == [0, 0]
+    assert list(classes["captureFraction"]) == pytest.approx([4 / 12, 7 / 8])
 
 
 def test_size_classes_of_some_patches(stats):
@@ -142,3 +151,24 @@ def test_grade_efficiency_of_a_case(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     assert __main__.main(["gradeEfficiency", str(tmp_path)]) == 0
     assert (tmp_path / "gradeEfficiency.png").stat().st_size > 0
+
+
+def test_commands_say_what_is_missing(tmp_path, monkeypatch, capsys):
+    # No statistics written (writeToFile off), an injector the file does
+    # not hold: one line naming the file or the injector, exit status 1
+    from adhesivewall import __main__
+    monkeypatch.chdir(tmp_path)
+    assert __main__.main(["sizeClasses", str(tmp_path)]) == 1
+    err = capsys.readouterr().err
+    assert "statistics.dat" in err and "writeToFile yes" in err, err
+    folder = tmp_path / "postProcessing/lagrangian/kinematicCloud" \
+        / "adhesiveWallInteraction/0"
+    folder.mkdir(parents=True)
+    (folder / "gradeEfficiency.dat").write_text(
+        "# grade efficiency\n" + GRADE_HEADER
+        + grade_row("1", "all", "0", "inf", 10, 1, 2, 7))
+    assert __main__.main(["gradeEfficiency", str(tmp_path),
+                          "kinematicCloud", "model2"]) == 1
+    err = capsys.readouterr().err
+    assert "no rows of ['model2']; its injectors are ['all']" in err, err
+    assert "outputByInjectorId yes" in err, err

@@ -6,6 +6,7 @@ Commands:
   channelResuspension [CASE] Allrun.post): results.csv, log.table, plots
   fibreFilter [CASE]
   microsphereImpact [CASE]
+  settlingChannel [CASE]
   tubeDiffusion [CASE]
 
   compare CASE REFERENCE     the files under the folder REFERENCE against
@@ -15,9 +16,12 @@ Commands:
 
   sizeClasses CASE [CLOUD [PATCH...]]
                              per size class of the model's statistics at
-                             their last time: impacts, rebounds, captures,
-                             escapes (particles) and the fraction captured,
-                             as CSV; sizeClasses.png in the current folder
+                             their last time, summed over the patches named
+                             (by default the walls: the patches through
+                             which nothing escaped): impacts, rebounds,
+                             captures, escapes (particles) and the fraction
+                             captured, as CSV; sizeClasses.png in the
+                             current folder
 
   gradeEfficiency CASE [CLOUD [INJECTOR...]]
                              per size class of the model's
@@ -62,29 +66,8 @@ def main(argv=None):
                             fromlist=["run"])
         module.run(*arguments)
         return 0
-    if command == "sizeClasses" and arguments:
-        from . import statistics, tables
-        case, cloud = arguments[0], (arguments[1:2] or ["kinematicCloud"])[0]
-        classes = statistics.size_classes(
-            statistics.read_statistics(case, cloud), arguments[2:] or None)
-        print(",".join(classes.names))
-        for row in classes.rows:
-            print(",".join(row))
-        statistics.plot_size_classes("sizeClasses.png", classes,
-                                     f"{case}: {cloud}")
-        return 0
-    if command == "gradeEfficiency" and arguments:
-        from . import statistics
-        case, cloud = arguments[0], (arguments[1:2] or ["kinematicCloud"])[0]
-        classes = statistics.grade_efficiency(
-            statistics.read_grade_efficiency(case, cloud),
-            arguments[2:] or None)
-        print(",".join(classes.names))
-        for row in classes.rows:
-            print(",".join(row))
-        statistics.plot_grade_efficiency("gradeEfficiency.png", classes,
-                                         f"{case}: {cloud}")
-        return 0
+    if command in ("sizeClasses", "gradeEfficiency") and arguments:
+        return _case_table(command, arguments)
     if command == "check":
         from . import checks
         return checks.main(arguments)
@@ -126,11 +109,50 @@ def main(argv=None):
     return 1
 
 
+def _case_table(command, arguments):
+    """sizeClasses or gradeEfficiency of a case: the CSV on standard
+    output and the plot; a missing file or a patch or injector the file
+    does not hold is said in one line (exit status 1)."""
+    from . import statistics
+    case, cloud = arguments[0], (arguments[1:2] or ["kinematicCloud"])[0]
+    selected = arguments[2:] or None
+    try:
+        if command == "sizeClasses":
+            classes = statistics.size_classes(
+                statistics.read_statistics(case, cloud), selected)
+        else:
+            classes = statistics.grade_efficiency(
+                statistics.read_grade_efficiency(case, cloud), selected)
+    except FileNotFoundError as err:
+        print(f"adhesiveWallPost {command}: no {err.filename}: the model "
+              f"writes it with writeToFile yes (and sizeClasses) in the "
+              f"adhesiveWallInteractionCoeffs of cloud '{cloud}'",
+              file=sys.stderr)
+        return 1
+    except KeyError as err:
+        hint = "" if command == "sizeClasses" else (
+            " (the injector is 'all' unless outputByInjectorId yes)")
+        print(f"adhesiveWallPost {command}: {err.args[0]}{hint}",
+              file=sys.stderr)
+        return 1
+    print(",".join(classes.names))
+    for row in classes.rows:
+        print(",".join(row))
+    if command == "sizeClasses":
+        statistics.plot_size_classes("sizeClasses.png", classes,
+                                     f"{case}: {cloud}")
+    else:
+        statistics.plot_grade_efficiency("gradeEfficiency.png", classes,
+                                         f"{case}: {cloud}")
+    return 0
+
+
 TUTORIALS = {
     "bendDeposition": "bend_deposition",
     "channelResuspension": "channel_resuspension",
     "fibreFilter": "fibre_filter",
     "microsphereImpact": "microsphere_impact",
+    "settlingChannel": "settling_channel",
     "tubeDiffusion": "tube_diffusion",
 }
 

@@ -222,3 +222,25 @@ def stokes_einstein(d, temperature, mu, slip=1.0):
     D = k_B T Cc/(3 pi mu d) (Einstein 1905, with the slip-corrected
     mobility Cc/(3 pi mu d))."""
     return BOLTZMANN * temperature * slip / (3 * math.pi * mu * d)
+
+
+def settling_channel(settling_velocity, length, mean_velocity, height):
+    """The fraction of the particles that settle onto the floor of a
+    horizontal channel of the given length and height [m], in a steady 2-D
+    flow of mean velocity [m/s], particles entering uniformly over the
+    flux: min(1, v_s L/(U H)), whatever the velocity profile.
+
+    Derived here (the classical result for horizontal channels; Fuchs,
+    The Mechanics of Aerosols, 1964): a particle without inertia moves with
+    the gas plus v_s downwards, so the flux below it, psi (the stream
+    function, u = dpsi/dy, v = -dpsi/dx), changes along its path at
+    dpsi/dt = (-v) u + u (v - v_s) = -u v_s, that is dpsi/dx = -v_s: it
+    reaches the floor (psi = 0) within L when it enters with psi < v_s L,
+    a fraction v_s L/(U H) of the flux U H. Particles spread uniformly
+    over the area of an inlet of uniform velocity enter uniformly over
+    the flux, however the profile develops downstream."""
+    if min(settling_velocity, length, mean_velocity, height) < 0 \
+            or mean_velocity * height == 0:
+        raise ValueError(f"settling_channel: v_s {settling_velocity}, L "
+                         f"{length}, U {mean_velocity}, H {height}")
+    return min(1.0, settling_velocity * length / (mean_velocity * height))

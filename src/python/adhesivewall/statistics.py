@@ -85,19 +85,34 @@ def _by_class(table, column, selected):
     in order of dMin, as ((dMin, dMax), rows) pairs."""
     last = table.last_time()
     if selected is not None:
+        held = list(dict.fromkeys(last.text(column)))
         last = last.where(**{column: lambda value: value in selected})
         if not len(last):
-            raise KeyError(f"{table.source}: no rows of {selected}")
+            raise KeyError(f"{table.source}: no rows of {selected}; its "
+                           f"{column}s are {held}")
     classes = sorted(set(zip(last.text("dMin"), last.text("dMax"))),
                      key=lambda c: float(c[0]))
     return [((lo, hi), last.where(dMin=lo, dMax=hi)) for lo, hi in classes]
 
 
+def walls(statistics):
+    """The patches of the statistics at their last time through which
+    nothing escaped: the walls (an escape entry's impacts are all escapes,
+    a wall entry's none)."""
+    last = statistics.last_time()
+    names = list(dict.fromkeys(last.text("patch")))
+    return [name for name in names
+            if last.where(patch=name).sum("escapeParticles") == 0]
+
+
 def size_classes(statistics, patches=None):
     """Per size class (dMin, dMax) of the statistics at their last time,
-    summed over the patches given (all by default) and over injectors: the
-    particles that hit a wall, rebounded, were captured and escaped, and
-    the fraction of the impacts captured. A Table, in order of dMin."""
+    summed over the patches given (by default the walls: those through
+    which nothing escaped) and over injectors: the particles that hit a
+    wall, rebounded, were captured and escaped, and the fraction of the
+    impacts captured. A Table, in order of dMin."""
+    if patches is None:
+        patches = walls(statistics)
     rows = []
     for (lo, hi), of in _by_class(statistics, "patch", patches):
         impacts = of.sum("impactParticles")
@@ -105,7 +120,7 @@ def size_classes(statistics, patches=None):
         rows.append([lo, hi, "%.17g" % impacts,
                      "%.17g" % of.sum("reboundParticles"),
                      "%.17g" % captured, "%.17g" % of.sum("escapeParticles"),
-                     "%.6g" % (captured / impacts) if impacts else "nan"])
+                     "%.17g" % (captured / impacts) if impacts else "nan"])
     return tables.Table(SIZE_CLASS_COLUMNS, rows, statistics.source)
 
 

@@ -1,0 +1,118 @@
+# adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
+"""settlingChannel: particles settling onto the floor of a laminar
+channel against the flux argument (correlations.settling_channel, derived
+there: an analytic result, not a measurement).
+
+Per injector (one per diameter), the parcels captured on the floor from
+the model's statistics (statistics.dat) over those injected
+(gradeEfficiency.dat), against min(1, v_s L/(U H)) with v_s Stokes'
+settling velocity with buoyancy (aerosol.settling_velocity, no slip: the
+case's sphereDrag), L and H the channel's length and height (the mesh's
+points) and U the inlet's uniform velocity:
+
+    results.csv     per diameter: d, vs, predicted, eta (floor captures /
+                    injected), etaSE (binomial standard error), the
+                    parcels captured on the floor and injected
+    log.table       the table (also printed)
+    settling.png    eta against d with the prediction
+
+    adhesiveWallPost settlingChannel [CASE]
+"""
+
+import math
+import os
+
+from .. import aerosol, correlations, curves, foam, statistics, tables
+
+CLOUD = "kinematicCloud"
+RESULT_COLUMNS = ["d", "vs", "predicted", "eta", "etaSE", "floorParcels",
+                  "injectedParcels"]
+
+
+def channel(case="."):
+    """The channel's length and height [m] (the extent of the mesh's points
+    in x and y) and the inlet's velocity [m/s] (0/U, uniform)."""
+    points = foam.list_file(os.path.join(case, "constant", "polyMesh",
+                                         "points"))
+    xs = [p[0] for p in points]
+    ys = [p[1] for p in points]
+    kind, (U, _, _) = foam.dictionary("0/U", "boundaryField/inlet/value",
+                                      case=case)
+    if kind != "uniform":
+        raise ValueError(f"0/U: the inlet's value is {kind}, not uniform")
+    return max(xs) - min(xs), max(ys) - min(ys), float(U)
+
+
+def result_rows(case="."):
+    """One row per injector, in the order of the cloud's injectors."""
+    props = "constant/kinematicCloudProperties"
+    rho_p = float(foam.value(props, "constantProperties/rho0", case=case))
+    rho_c = float(foam.value("constant/transportProperties", "rhoInf",
+                             case=case))
+    mu = rho_c * float(foam.value("constant/transportProperties", "nu",
+                                  case=case))
+    gravity = math.sqrt(sum(float(c) ** 2 for c in foam.dictionary(
+        "constant/g", "value", case=case)))
+    L, H, U = channel(case)
+    stats = statistics.read_statistics(case, CLOUD)
+    grade = statistics.read_grade_efficiency(case, CLOUD).last_time()
+    injectors = foam.dictionary(props, "subModels/injectionModels",
+                                case=case)
+    rows = []
+    for name, injector in injectors.items():
+        d = float(injector["sizeDistribution"]["fixedValueDistribution"]
+                  ["value"])
+        vs = aerosol.settling_velocity(d, rho_p, rho_c, mu, gravity, 0.0)
+        inside = grade.where(dMin=lambda lo: float(lo) <= d,
+                             dMax=lambda hi: d < float(hi))
+        if len(inside) != 1:
+            raise ValueError(f"{name}: d = {d} is in {len(inside)} size "
+                             "classes of gradeEfficiency.dat: sizeClasses "
+                             "must give each injector's size a class")
+        injected = inside.sum("injectedParcels")
+        floor = statistics.final(stats, "captureParcels", patch="floor",
+                                 dMin=inside.text("dMin")[0])
+        rows.append([d, vs, correlations.settling_channel(vs, L, U, H),
+                     floor / injected, curves.binomial_se(floor, injected),
+                     int(floor), int(injected)])
+    return rows
+
+
+def headline(results):
+    lines = ["settlingChannel: captured on the floor / injected, against "
+             "min(1, v_s L/(U H)) (analytic)",
+             "   d [um]   v_s [mm/s]   predicted   eta +- SE"]
+    for d, vs, p, eta, se in zip(results["d"], results["vs"],
+                                 results["predicted"], results["eta"],
+                                 results["etaSE"]):
+        lines.append("%9.3g %12.4g %11.4f   %.4f +- %.4f"
+                     % (d * 1e6, vs * 1e3, p, eta, se))
+    return lines
+
+
+def plot_settling(path, results):
+    from .. import plots
+    fig, ax = plots.figure(8, 5)
+    ax.errorbar(results["d"] * 1e6, results["eta"], yerr=results["etaSE"],
+                fmt="o", capsize=3, label="parcels, +- binomial SE")
+    ax.plot(results["d"] * 1e6, results["predicted"], "kx", ms=9,
+            label="min(1, v_s L/(U H)), analytic")
+    plots.axes(ax, "particle diameter [um]", "captured on the floor / injected",
+               "Settling in a laminar channel", ylim=(0, 1.05))
+    ax.legend(loc="upper left")
+    plots.save(fig, path)
+
+
+def run(case="."):
+    os.chdir(case)
+    for name in ("statistics.dat", "gradeEfficiency.dat"):
+        path = os.path.join(statistics.output_folder(".", CLOUD), name)
+        if not os.path.isfile(path):
+            raise FileNotFoundError(f"no {path}: run ./Allrun")
+    tables.write_csv("results.csv", RESULT_COLUMNS, result_rows("."))
+    results = tables.read("results.csv")
+    lines = headline(results)
+    with open("log.table", "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    plot_settling("settling.png", results)
