@@ -32,6 +32,13 @@ Foam::ExactBrownianMotionForce<CloudType>::ExactBrownianMotionForce
     (
         this->coeffs(), {"T", "seed", "extremeValues"}, "exactBrownianMotion"
     );
+    Info<< "    exactBrownianMotion: "
+        << (
+               T_ > 0
+             ? "T " + aerosolForces::text(T_) + " K"
+             : std::string("the carrier's temperature at each parcel")
+           ).c_str()
+        << ", seed " << label(seed_) << endl;
 }
 
 

@@ -48,6 +48,32 @@ Foam::SlipSphereDragForce<CloudType>::SlipSphereDragForce
         );
     }
 
+    // What it will do, in the log (as the model prints its settings),
+    // numbers in their shortest exact form
+    using aerosolForces::text;
+    std::string settings =
+        (
+            checkedInput::find(coeffs, "slipCoefficients")
+          ? checkedInput::readWord(coeffs, "slipCoefficients")
+          : word("Davies")
+        )
+      + " slip (A1 " + text(coefficients_.A1) + ", A2 "
+      + text(coefficients_.A2) + ", A3 " + text(coefficients_.A3)
+      + "), mean free path ";
+    if (meanFreePath_.given >= 0)
+    {
+        settings += text(meanFreePath_.given) + " m";
+    }
+    else
+    {
+        settings +=
+            "from p " + text(meanFreePath_.p) + " Pa, "
+          + (T_ > 0 ? "T " + text(T_) + " K" : "the carrier's temperature")
+          + ", molar mass " + text(meanFreePath_.molarMass)
+          + " kg/mol and the carrier's viscosity";
+    }
+    Info<< "    slipSphereDrag: " << settings.c_str() << endl;
+
     // It is the drag: another drag law beside it (sphereDrag left in when
     // switching) would double the drag and halve exactBrownianMotion's
     // diffusivity kT/Sp, with nothing in the log (OpenFOAM's drag forces
