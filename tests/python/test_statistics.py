@@ -146,11 +146,16 @@ def test_grade_efficiency_of_a_case(tmp_path, monkeypatch):
         statistics.grade_efficiency(
             statistics.read_grade_efficiency(tmp_path), injectors=["3"])
 
-    # The command: the same table as CSV, and its plot
+    # The command: the same table as CSV, and its plot in the case's folder
+    # wherever it is run from; -help after the command is the help
     from adhesivewall import __main__
-    monkeypatch.chdir(tmp_path)
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    monkeypatch.chdir(elsewhere)
     assert __main__.main(["gradeEfficiency", str(tmp_path)]) == 0
     assert (tmp_path / "gradeEfficiency.png").stat().st_size > 0
+    assert not (elsewhere / "gradeEfficiency.png").exists()
+    assert __main__.main(["gradeEfficiency", "-help"]) == 0
 
 
 def test_commands_say_what_is_missing(tmp_path, monkeypatch, capsys):

@@ -16,7 +16,9 @@ files it writes:
   inlet);
 - the cloud dictionary written out in full (no macro, no #include): the
   tutorial is the case to copy;
-- no FOAM FATAL, no NaN, the tables and plots written.
+- no FOAM FATAL, no NaN, the tables and plots written;
+- the comparison's command on a case that is not the tutorial's says so
+  in words (no traceback).
 """
 
 import os
@@ -31,16 +33,23 @@ NAME = "settlingChannel"
 
 
 @pytest.fixture(scope="module")
-def case():
+def tutorial():
     work = run_tutorial(NAME)
     assert fatal_logs(work) == []
     return work
 
 
-def test_runs_cleanly(case):
-    assert nan_files(case) == []
+@pytest.fixture(scope="module")
+def case(tutorial):
+    """The particle case."""
+    return os.path.join(tutorial, "particles")
+
+
+def test_runs_cleanly(tutorial, case):
+    assert nan_files(tutorial) == []
     for name in ("results.csv", "log.table", "settling.png",
-                 "gradeEfficiency.csv", "gradeEfficiency.png", NAME + ".foam"):
+                 "gradeEfficiency.csv", "gradeEfficiency.png",
+                 "particles.foam", "../flow/flow.foam"):
         assert os.path.exists(os.path.join(case, name)), name
 
 
@@ -92,6 +101,18 @@ def test_contacts_at_the_surface(case):
 
 
 def test_cloud_dictionary_is_written_out(case):
-    text = open(os.path.join(PROJECT, "tutorials", NAME, "constant",
-                             "kinematicCloudProperties")).read()
+    text = open(os.path.join(PROJECT, "tutorials", NAME, "particles",
+                             "constant", "kinematicCloudProperties")).read()
     assert not re.search(r"#include|\$[\w:{]", text)
+
+
+def test_comparison_refuses_another_case(tmp_path):
+    # A case of one's own copied from the tutorial keeps Allrun.post's
+    # comparison line: it says what it needs, without a traceback
+    import subprocess
+    result = subprocess.run(["adhesiveWallPost", "settlingChannel",
+                             str(tmp_path)], capture_output=True, text=True)
+    assert result.returncode == 1
+    assert "needs the settlingChannel tutorial's particle case" \
+        in result.stderr, result.stderr
+    assert "Traceback" not in result.stderr

@@ -155,10 +155,11 @@ void Foam::checkedInput::fail
     const std::string& requirement
 )
 {
+    // A keyword given without a value (sphereDrag;) is named alone
     FatalIOErrorInFunction(dict)
         << "In dictionary " << dict.name() << ": keyword '" << keyword.c_str()
-        << "' = " << value.c_str() << ": " << requirement.c_str() << nl
-        << exit(FatalIOError);
+        << (value.empty() ? "'" : "' = ") << value.c_str() << ": "
+        << requirement.c_str() << nl << exit(FatalIOError);
     std::abort();   // not reached: exit() stops the run or throws
 }
 

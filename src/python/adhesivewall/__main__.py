@@ -21,7 +21,7 @@ Commands:
                              which nothing escaped): impacts, rebounds,
                              captures, escapes (particles) and the fraction
                              captured, as CSV; sizeClasses.png in the
-                             current folder
+                             case's folder
 
   gradeEfficiency CASE [CLOUD [INJECTOR...]]
                              per size class of the model's
@@ -30,7 +30,7 @@ Commands:
                              injected, captured, escaped, removed,
                              airborne and the grade efficiency
                              (captured/injected), as CSV;
-                             gradeEfficiency.png in the current folder
+                             gradeEfficiency.png in the case's folder
 
   Both read the latest run of CASE (a restart's totals continue those of
   the runs before it).
@@ -52,12 +52,13 @@ Commands:
                              and positions (VARIANT full or reduced)
 """
 
+import os
 import sys
 
 
 def main(argv=None):
     argv = list(sys.argv[1:] if argv is None else argv)
-    if not argv or argv[0] in ("-h", "-help", "--help"):
+    if not argv or any(a in ("-h", "-help", "--help") for a in argv[:2]):
         print(__doc__)
         return 0 if argv else 1
     command, arguments = argv[0], argv[1:]
@@ -138,12 +139,13 @@ def _case_table(command, arguments):
     print(",".join(classes.names))
     for row in classes.rows:
         print(",".join(row))
+    title = f"{os.path.basename(os.path.abspath(case))}: {cloud}"
     if command == "sizeClasses":
-        statistics.plot_size_classes("sizeClasses.png", classes,
-                                     f"{case}: {cloud}")
+        statistics.plot_size_classes(os.path.join(case, "sizeClasses.png"),
+                                     classes, title)
     else:
-        statistics.plot_grade_efficiency("gradeEfficiency.png", classes,
-                                         f"{case}: {cloud}")
+        statistics.plot_grade_efficiency(
+            os.path.join(case, "gradeEfficiency.png"), classes, title)
     return 0
 
 

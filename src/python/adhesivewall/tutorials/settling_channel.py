@@ -16,7 +16,7 @@ points) and U the inlet's uniform velocity:
     log.table       the table (also printed)
     settling.png    eta against d with the prediction
 
-    adhesiveWallPost settlingChannel [CASE]
+    adhesiveWallPost settlingChannel [CASE]    (CASE: the particle case)
 """
 
 import math
@@ -105,11 +105,19 @@ def plot_settling(path, results):
 
 def run(case="."):
     os.chdir(case)
-    for name in ("statistics.dat", "gradeEfficiency.dat"):
-        path = os.path.join(statistics.output_folder(".", CLOUD), name)
-        if not os.path.isfile(path):
-            raise FileNotFoundError(f"no {path}: run ./Allrun")
-    tables.write_csv("results.csv", RESULT_COLUMNS, result_rows("."))
+    try:
+        for name in ("statistics.dat", "gradeEfficiency.dat"):
+            path = os.path.join(statistics.output_folder(".", CLOUD), name)
+            if not os.path.isfile(path):
+                raise FileNotFoundError(f"no {path}: run ./Allrun")
+        rows = result_rows(".")
+    except (RuntimeError, KeyError, ValueError, OSError) as err:
+        raise SystemExit(
+            f"adhesiveWallPost settlingChannel: {err}\nThis comparison needs "
+            "the settlingChannel tutorial's particle case (its inlet, floor "
+            "and fixed-size injectors); in a case of your own, leave it out "
+            "of Allrun.post") from None
+    tables.write_csv("results.csv", RESULT_COLUMNS, rows)
     results = tables.read("results.csv")
     lines = headline(results)
     with open("log.table", "w") as f:
