@@ -1,6 +1,9 @@
 // adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 #include "Plausibility.H"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -19,7 +22,11 @@ double inSI(const double value, const Magnitude::Slip& slip)
 {
     if (slip.offset != 0)
     {
-        return value + slip.offset;
+        // The sum to twelve digits: 21.7 degC is 294.85 K, not the
+        // binary sum's 294.84999999999997
+        char sum[32];
+        std::snprintf(sum, sizeof(sum), "%.12g", value + slip.offset);
+        return std::strtod(sum, nullptr);
     }
     const std::string text = toText(value);
     const auto e = text.find('e');
@@ -64,7 +71,26 @@ std::string meant(const Magnitude& m, const double value)
             physical = &slip;
         }
     }
-    if (physical && (named.empty() || physical < named.front()))
+    // Of those in the model's range the nearest to the typical value first
+    // (101.325 is kPa before bar)
+    if (m.typical > 0)
+    {
+        std::stable_sort
+        (
+            named.begin(), named.end(),
+            [&](const Magnitude::Slip* a, const Magnitude::Slip* b)
+            {
+                return
+                    std::abs(std::log(inSI(value, *a)/m.typical))
+                  < std::abs(std::log(inSI(value, *b)/m.typical));
+            }
+        );
+    }
+    if
+    (
+        physical
+     && (named.empty() || physical < *std::min_element(named.begin(), named.end()))
+    )
     {
         named.insert(named.begin(), physical);
     }

@@ -301,29 +301,49 @@ def test_stokes_einstein_is_the_einstein_relation():
         c.BOLTZMANN * T * mobility, rel=1e-15)
 
 
-@pytest.mark.parametrize("profile", [
-    lambda s: 1.0,                      # plug flow
-    lambda s: 6 * s * (1 - s),          # Poiseuille
-    lambda s: 3 * s * s,                # sheared towards the top
-])
-def test_settling_channel_against_trajectories(profile):
-    # Parcels entering at heights spread over the flux, each followed down
-    # at v_s across the profile (trapezoidal steps of its height): the
-    # share that reaches the floor within L is v_s L/(U H) for any profile
-    H, L, U, vs = 1e-3, 0.02, 0.1, 1.2e-3
-    n, steps = 2000, 400
-    heights = [H * (i + 0.5) / n for i in range(n)]
-    flux = [U * profile(y / H) for y in heights]
+def test_settling_channel_against_trajectories_in_a_developing_flow():
+    # A 2-D flow that develops from plug flow at the inlet to Poiseuille
+    # flow, with a velocity across the channel (v != 0): the stream
+    # function psi = U H [(1 - w) s + w (3 s^2 - 2 s^3)], s = y/H,
+    # w = 1 - exp(-x/l), u = dpsi/dy, v = -dpsi/dx (divergence-free, no
+    # flux through the walls). Parcels start evenly over the inlet's
+    # height (the plug inlet: evenly over the flux) and are followed with
+    # RK4 at the gas velocity plus v_s downwards until they reach the floor
+    # or x = L: the share on the floor is v_s L/(U H)
+    H, L, U, vs, ell = 1e-3, 0.02, 0.1, 2e-3, 2e-3
+    n = 400
 
-    def reach(y0):
-        # x travelled while settling from y0 to the floor: int u dy / v_s
-        ys = [y0 * k / steps for k in range(steps + 1)]
-        us = [U * profile(y / H) for y in ys]
-        return sum((us[k] + us[k + 1]) / 2 * (ys[k + 1] - ys[k])
-                   for k in range(steps)) / vs
-    deposited = sum(f for y, f in zip(heights, flux) if reach(y) <= L)
+    def velocity(x, y):
+        s = y / H
+        w = 1 - np.exp(-x / ell)
+        dw = np.exp(-x / ell) / ell
+        u = U * ((1 - w) + w * 6 * s * (1 - s))
+        v = -U * H * dw * ((3 * s**2 - 2 * s**3) - s)
+        return u, v - vs
+
+    x = np.zeros(n)
+    y = H * (np.arange(n) + 0.5) / n
+    floor = np.zeros(n, dtype=bool)
+    moving = np.ones(n, dtype=bool)
+    dt = 2e-4
+    for _ in range(20000):
+        if not moving.any():
+            break
+        k1 = velocity(x, y)
+        k2 = velocity(x + dt / 2 * k1[0], y + dt / 2 * k1[1])
+        k3 = velocity(x + dt / 2 * k2[0], y + dt / 2 * k2[1])
+        k4 = velocity(x + dt * k3[0], y + dt * k3[1])
+        x = np.where(moving, x + dt / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0]
+                                            + k4[0]), x)
+        y = np.where(moving, y + dt / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1]
+                                            + k4[1]), y)
+        landed = moving & (y <= 0) & (x <= L)
+        floor |= landed
+        moving &= (y > 0) & (x < L)
+    assert not moving.any()
     expected = c.settling_channel(vs, L, U, H)
-    assert deposited / sum(flux) == pytest.approx(expected, abs=2e-3)
+    assert expected == pytest.approx(0.4)
+    assert floor.mean() == pytest.approx(expected, abs=3.0 / n)
     assert c.settling_channel(10 * vs, L, U, H) == 1.0
     with pytest.raises(ValueError):
         c.settling_channel(vs, L, 0.0, H)

@@ -175,5 +175,6 @@ def test_commands_say_what_is_missing(tmp_path, monkeypatch, capsys):
     assert __main__.main(["gradeEfficiency", str(tmp_path),
                           "kinematicCloud", "model2"]) == 1
     err = capsys.readouterr().err
-    assert "no rows of ['model2']; its injectors are ['all']" in err, err
+    assert "no rows of ['model2']; its injector column holds ['all']" \
+        in err, err
     assert "outputByInjectorId yes" in err, err

@@ -1,5 +1,5 @@
 # adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
-"""settlingChannel (the whole tutorial: a few seconds), judged on the
+"""settlingChannel (the whole tutorial: 20 s), judged on the
 files it writes:
 
 - the fraction of each diameter's parcels captured on the floor within
@@ -7,7 +7,9 @@ files it writes:
   analytic settling in a channel (correlations.settling_channel, derived
   there; the 0.005 for what the formula leaves out: the particles'
   inertia, their radius at the floor, the Reynolds-number term of
-  sphereDrag, each below 1e-3 here), and rising with the diameter;
+  sphereDrag, the injection's start inside the first cell, the
+  interpolated velocity's divergence: tutorial README), and rising with
+  the diameter;
 - every parcel accounted for: the floor's and the top's captures and the
   outlet's escapes make up the parcels injected, none airborne at the
   end, nothing through the inlet, the mass balance closed;
@@ -67,7 +69,7 @@ def test_every_parcel_accounted_for(case):
     stats = statistics.read_statistics(case)
     grade = statistics.read_grade_efficiency(case).last_time()
     injected = grade.sum("injectedParcels")
-    assert injected == 3000
+    assert injected == 15000
     captured = statistics.final(stats, "captureParcels")
     escaped = statistics.final(stats, "escapeParcels", patch="outlet")
     assert captured + escaped == injected
@@ -96,8 +98,8 @@ def test_contacts_at_the_surface(case):
                 overlapping += 1
                 continue
             assert abs(gap - d / 2) <= 1e-3 * d, (patch, x, y, d)
-    # about the share of the inlet within d/2 of a wall, d/H of 1000
-    assert overlapping <= 30
+    # about the share of the inlet within d/2 of a wall, d/H of 5000
+    assert overlapping <= 150
 
 
 def test_cloud_dictionary_is_written_out(case):

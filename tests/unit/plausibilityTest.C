@@ -130,6 +130,12 @@ TEST(Plausibility, TheGasState)
         " aerosols (air liquefies at 79-82 K); did you mean 293.15 (20 degC)?"))
         << stops(magnitude::temperature, "T", 20);
     EXPECT_EQ(stops(magnitude::temperature, "T", 293.15), "");
+    // The sum in decimal (not the binary 294.84999999999997), and 0 or
+    // below typed in degC too
+    EXPECT_TRUE(has(stops(magnitude::temperature, "T", 21.7), "did you mean 294.85 (21.7 degC)?"))
+        << stops(magnitude::temperature, "T", 21.7);
+    EXPECT_TRUE(has(stops(magnitude::temperature, "T", 0), "did you mean 273.15 (0 degC)?"));
+    EXPECT_TRUE(has(stops(magnitude::temperature, "T", -10), "did you mean 263.15 (-10 degC)?"));
     EXPECT_EQ(stops(magnitude::temperature, "T", 100), "");
     EXPECT_NE(stops(magnitude::temperature, "T", 99), "");
     EXPECT_NE(stops(magnitude::temperature, "T", 2e4), "");
@@ -137,8 +143,13 @@ TEST(Plausibility, TheGasState)
     EXPECT_TRUE(has(stops(magnitude::pressure, "p", 1.01325),
         "did you mean 101325 (1.01325 bar) or 1013.25 (1.01325 kPa)?"))
         << stops(magnitude::pressure, "p", 1.01325);
+    // The unit that gives the nearest to an atmosphere first
     EXPECT_TRUE(has(stops(magnitude::pressure, "p", 101.325),
-        "101325 (101.325 kPa)"));
+        "did you mean 101325 (101.325 kPa) or 10132500 (101.325 bar)?"))
+        << stops(magnitude::pressure, "p", 101.325);
+    EXPECT_TRUE(has(stops(magnitude::pressure, "p", 0.101325),
+        "did you mean 101325 (0.101325 MPa) or 10132.5 (0.101325 bar)?"))
+        << stops(magnitude::pressure, "p", 0.101325);
     EXPECT_EQ(stops(magnitude::pressure, "p", 101325), "");
     EXPECT_EQ(stops(magnitude::pressure, "p", 1e3), "");
     EXPECT_NE(stops(magnitude::pressure, "p", 999), "");

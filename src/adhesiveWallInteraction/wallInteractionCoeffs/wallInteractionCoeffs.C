@@ -262,7 +262,7 @@ Foam::wallInteractionCoeffs::wallInteractionCoeffs
     // Size classes typed in um (2 for 2e-6) would put every parcel in one
     for (const scalar edge : sizeClassEdges_)
     {
-        magnitudes_.check
+        magnitudes_.checkMistake
         (
             coeffs, "sizeClasses", edge, brachDunn::magnitude::diameter
         );

@@ -580,17 +580,19 @@ def expected_grade_efficiency(case=".", start_time="0",
     classes = list(zip(grade["dMin"], grade["dMax"]))
     edges = sorted({hi for _, hi in classes if math.isfinite(hi)})
     properties = f"constant/{cloud}Properties"
-    try:
-        foam.value(properties,
-                   "subModels/adhesiveWallInteractionCoeffs/recordPatches",
-                   case=case)
-    except RuntimeError:
-        pass
-    else:
+    coeffs = foam.dictionary(properties,
+                             "subModels/adhesiveWallInteractionCoeffs",
+                             case=case)
+    if "recordPatches" in coeffs:
         raise CheckError(f"{case}: recordPatches in {properties}: "
                          "impacts.csv holds only those patches' impacts, "
                          "and the grade efficiency cannot be counted from it")
-    with open(os.path.join(folder, "impacts.csv")) as f:
+    records_path = os.path.join(folder, "impacts.csv")
+    if not os.path.isfile(records_path):
+        raise CheckError(f"{case}: no {records_path}: the grade efficiency "
+                         "is counted from the impact records "
+                         "(maxImpactRecords)")
+    with open(records_path) as f:
         if any(line.startswith("# capped") for line in f):
             raise CheckError(f"{case}: impacts.csv is capped at "
                              "maxImpactRecords, and the grade efficiency "
@@ -613,7 +615,7 @@ def expected_grade_efficiency(case=".", start_time="0",
         positions = len(foam.list_file(os.path.join(
             case, "constant", injector["positionsFile"])))
         add("injected", d, number(injector["nParticle"]), positions)
-    records = tables.read(os.path.join(folder, "impacts.csv"))
+    records = tables.read(records_path)
     for outcome, quantity, sign in (("capture", "captured", 1),
                                     ("escape", "escaped", 1),
                                     ("resuspension", "captured", -1)):

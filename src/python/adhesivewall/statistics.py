@@ -89,7 +89,7 @@ def _by_class(table, column, selected):
         last = last.where(**{column: lambda value: value in selected})
         if not len(last):
             raise KeyError(f"{table.source}: no rows of {selected}; its "
-                           f"{column}s are {held}")
+                           f"{column} column holds {held}")
     classes = sorted(set(zip(last.text("dMin"), last.text("dMax"))),
                      key=lambda c: float(c[0]))
     return [((lo, hi), last.where(dMin=lo, dMax=hi)) for lo, hi in classes]
@@ -113,6 +113,9 @@ def size_classes(statistics, patches=None):
     impacts captured. A Table, in order of dMin."""
     if patches is None:
         patches = walls(statistics)
+        if not patches:
+            raise KeyError(f"{statistics.source}: something escaped through "
+                           "every patch, so none is a wall: name the patches")
     rows = []
     for (lo, hi), of in _by_class(statistics, "patch", patches):
         impacts = of.sum("impactParticles")

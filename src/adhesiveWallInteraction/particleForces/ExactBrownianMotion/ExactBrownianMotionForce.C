@@ -22,16 +22,17 @@ Foam::ExactBrownianMotionForce<CloudType>::ExactBrownianMotionForce
     (
         aerosolForces::readTemperature
         (
-            this->coeffs(), aerosolForces::carrierHasTemperature<CloudType>
+            checkedInput::withKnownKeywords
+            (
+                this->coeffs(), {"T", "seed", "extremeValues"},
+                "exactBrownianMotion"
+            ),
+            aerosolForces::carrierHasTemperature<CloudType>
         )
     ),
     seed_(checkedInput::readCount(this->coeffs(), "seed", 0)),
     drawTrackTime_(-1)
 {
-    checkedInput::requireKnownKeywords
-    (
-        this->coeffs(), {"T", "seed", "extremeValues"}, "exactBrownianMotion"
-    );
     Info<< "    exactBrownianMotion: "
         << (
                T_ > 0

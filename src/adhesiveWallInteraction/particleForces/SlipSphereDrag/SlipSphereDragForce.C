@@ -18,20 +18,25 @@ Foam::SlipSphereDragForce<CloudType>::SlipSphereDragForce
 )
 :
     ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
-    coefficients_(aerosolForces::readSlipCoefficients(this->coeffs())),
+    coefficients_
+    (
+        aerosolForces::readSlipCoefficients
+        (
+            checkedInput::withKnownKeywords
+            (
+                this->coeffs(),
+                {
+                    "slipCoefficients", "meanFreePath", "p", "T",
+                    "molarMass", "extremeValues"
+                },
+                "slipSphereDrag"
+            )
+        )
+    ),
     meanFreePath_(aerosolForces::readMeanFreePath(this->coeffs())),
     T_(-1)
 {
     const dictionary& coeffs = this->coeffs();
-    checkedInput::requireKnownKeywords
-    (
-        coeffs,
-        {
-            "slipCoefficients", "meanFreePath", "p", "T", "molarMass",
-            "extremeValues"
-        },
-        "slipSphereDrag"
-    );
     if (meanFreePath_.given < 0)
     {
         T_ = aerosolForces::readTemperature

@@ -36,13 +36,25 @@ Foam::scalar readGasValue
 )
 {
     using namespace Foam;
-    const scalar value = readPositive(dict, keyword);
+    // A value not > 0 that is a unit mistake says what was meant (T 0,
+    // 0 degC), else that it must be > 0
+    const scalar value = checkedInput::readNumber(dict, keyword);
+    const std::string mistake = brachDunn::unitMistake(m, keyword, value);
+    if (!(value > 0) && mistake.find("did you mean") == std::string::npos)
+    {
+        readPositive(dict, keyword);
+    }
     const std::string warning = checkedInput::checkMagnitude
     (
         dict, keyword, value, m,
         checkedInput::readSwitch(dict, "extremeValues", false),
         "extremeValues yes in " + dict.dictName()
     );
+    if (!(value > 0))
+    {
+        // taken as given (extremeValues) is no way past > 0
+        readPositive(dict, keyword);
+    }
     if (!warning.empty())
     {
         WarningInFunction
