@@ -116,7 +116,9 @@ std::string unitMistake
 )
 {
     const bool below = value < m.mistakeBelow;
-    if (!below && !(value > m.mistakeAbove))
+    // (a quantity with no unit mistake below, a surface energy, leaves a
+    // negative value to its own sign check)
+    if ((!below && !(value > m.mistakeAbove)) || (below && !*m.softer))
     {
         return "";
     }

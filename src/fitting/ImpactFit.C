@@ -134,9 +134,16 @@ struct FittedLaw
         fit.lower.clear();
         fit.upper.clear();
         fit.logarithmic.clear();
+        fit.atBound.clear();
+        const VectorXd projected = project(VectorXd::Constant(size(), -HUGE_VAL));
+        const VectorXd top = project(VectorXd::Constant(size(), HUGE_VAL));
         for (int i = 0; i < size(); ++i)
         {
             const Coefficient& c = fitting.coefficients[i];
+            fit.atBound.push_back
+            (
+                theta(i) <= projected(i) || theta(i) >= top(i)
+            );
             const double half = fit.t*standardErrors(i);
             const double scale = c.logarithmic ? fit.values[i] : 1;
             fit.names.push_back(c.name);

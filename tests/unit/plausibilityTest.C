@@ -87,6 +87,9 @@ TEST(Plausibility, DensityDiameterAndSurfaceEnergy)
     EXPECT_NE(stops(magnitude::diameter, "d", 1e-300), "");
     EXPECT_TRUE(has(stops(magnitude::surfaceEnergy, "gamma", 50), "0.05 (50 mJ/m^2)"));
     EXPECT_EQ(stops(magnitude::surfaceEnergy, "gamma", 15), "");
+    // No unit mistake below: a negative surface energy is left to the
+    // caller's sign check (no message with the reason missing)
+    EXPECT_EQ(unitMistake(magnitude::surfaceEnergy, "w", -1), "");
 }
 
 

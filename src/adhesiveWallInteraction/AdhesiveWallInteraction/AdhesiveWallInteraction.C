@@ -771,6 +771,41 @@ void Foam::AdhesiveWallInteraction<CloudType>::setUpResuspension()
             );
         }
         any = any || resuspends[patchi];
+
+        // Biasi's fit of the adhesion spread holds below a radius of
+        // 35 um: an injector's larger size stops the run now, not at the
+        // deposit's first step
+        if
+        (
+            resuspends[patchi]
+         && entry->resuspension()->model.spread
+         == brachDunn::DepositResuspension::Spread::biasi
+        )
+        {
+            wallInteractionCloud::forEachInjectorSize
+            (
+                this->owner(),
+                [&](const dictionary& dict, const word& key, const scalar d)
+                {
+                    try
+                    {
+                        brachDunn::biasiAdhesion(0.5*d);
+                    }
+                    catch (const brachDunn::InputError& err)
+                    {
+                        checkedInput::fail
+                        (
+                            dict, key, name(d),
+                            "a diameter beyond Biasi's adhesion spread"
+                            " (adhesionSpread biasi of entry "
+                          + std::string(entry->name()) + "): radius "
+                          + err.requirement() + "; give adhesionSpread"
+                            " logNormal or none for such particles"
+                        );
+                    }
+                }
+            );
+        }
     }
     if (any)
     {

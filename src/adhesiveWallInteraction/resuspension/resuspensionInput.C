@@ -62,6 +62,14 @@ std::optional<Foam::resuspensionSettings> Foam::readResuspension
     );
 
     model.w = checkedInput::readNumber(sub, "w");
+    if (!(model.w > 0))
+    {
+        checkedInput::fail
+        (
+            sub, "w", checkedInput::entryText(*checkedInput::find(sub, "w")),
+            "must be > 0 [J/m^2]"
+        );
+    }
     magnitudes.check(sub, "w", model.w, brachDunn::magnitude::surfaceEnergy);
     settings.seed = checkedInput::readCount(sub, "seed", 1);
     model.rmsRatio =

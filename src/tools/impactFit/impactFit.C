@@ -382,6 +382,21 @@ void printLaw
         os  << "    " << std::left << std::setw(32) << figure.str()
             << std::setprecision(4) << "95 % interval " << law.lower[i]
             << " to " << law.upper[i] << unit << '\n';
+        if (law.atBound[i])
+        {
+            os  << "    warning: " << law.names[i] << " ended at an end of its"
+                << " range: the best fit lies there or beyond, so this is the"
+                << " bound's value, not the data's, and its interval means"
+                << " little";
+            if (law.values.size() > 1)
+            {
+                os  << "; a law of one coefficient ("
+                    << (std::string(family) == "Restitution"
+                        ? "-restitution" : "-adhesion")
+                    << " constant) may be all the data can tell";
+            }
+            os  << '\n';
+        }
     }
     if (law.correlation)
     {
