@@ -143,6 +143,13 @@ std::vector<brachDunn::Measurement> readImpacts(const fileName& file)
     std::vector<std::string> fields;
     int line = 0;
     bool first = true;
+    // The header's fields: a row with more is one with a decimal comma
+    // (1,2 for 1.2) more likely than one with a column the header lacks
+    std::size_t headerFields = 0;
+    const auto countFields = [](const std::string& t)
+    {
+        return std::size_t(std::count(t.begin(), t.end(), ',')) + 1;
+    };
     while (std::getline(in, text))
     {
         ++line;
@@ -155,12 +162,21 @@ std::vector<brachDunn::Measurement> readImpacts(const fileName& file)
             if (first && !tools::parseNumber(fields[0], number))
             {
                 first = false;
+                headerFields = countFields(text);
                 continue;
             }
             FatalErrorInFunction
                 << file.c_str() << " line " << line << ": expected"
                 << " diameter,speedIn,speedOut, each a finite number, found '"
                 << text.c_str() << "'" << nl << exit(FatalError);
+        }
+        if (headerFields && countFields(text) > headerFields)
+        {
+            FatalErrorInFunction
+                << file.c_str() << " line " << line << ": "
+                << countFields(text) << " fields where the header names "
+                << headerFields << ", in '" << text.c_str() << "': a decimal"
+                << " comma (write 1.2, not 1,2)?" << nl << exit(FatalError);
         }
         first = false;
         data.push_back({values[0], values[1], values[2], line});
@@ -382,6 +398,19 @@ void printLaw
         os  << "    " << std::left << std::setw(32) << figure.str()
             << std::setprecision(4) << "95 % interval " << law.lower[i]
             << " to " << law.upper[i] << unit << '\n';
+        // A surface energy beyond any solid's: speeds in another unit?
+        const std::string outside =
+            law.names[i] == "c" || law.names[i] == "gamma"
+          ? brachDunn::outsideRange
+            (
+                brachDunn::magnitude::surfaceEnergy, law.names[i],
+                law.values[i]
+            )
+          : std::string();
+        if (!outside.empty() && !law.atBound[i])
+        {
+            os  << "    warning: " << outside << " (are the speeds in m/s?)\n";
+        }
         if (law.atBound[i])
         {
             os  << "    warning: " << law.names[i] << " ended at an end of its"
