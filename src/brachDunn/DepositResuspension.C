@@ -76,7 +76,7 @@ std::string DepositResuspension::describe() const
 {
     std::ostringstream os;
     os  << (kind == Kind::rollingBalance ? "rollingBalance" : "rockNRoll")
-        << " w " << w;
+        << " w " << w << " J/m^2";
     switch (spread)
     {
         case Spread::none: os << " adhesionSpread none"; break;
@@ -89,7 +89,7 @@ std::string DepositResuspension::describe() const
     }
     if (kind == Kind::rollingBalance)
     {
-        os << " contactModulus " << contactModulus;
+        os << " contactModulus " << contactModulus << " Pa";
     }
     else
     {

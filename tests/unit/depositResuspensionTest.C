@@ -167,3 +167,16 @@ TEST(DepositResuspension, BadInput)
         "dt", "-0.5"
     ));
 }
+
+
+TEST(DepositResuspension, DescribedWithUnits)
+{
+    // The log's line of an entry's resuspension names the units
+    DepositResuspension rolling;
+    rolling.kind = DepositResuspension::Kind::rollingBalance;
+    rolling.w = 0.5;
+    rolling.contactModulus = 2e10;
+    rolling.spread = DepositResuspension::Spread::none;
+    EXPECT_EQ(rolling.describe(),
+              "rollingBalance w 0.5 J/m^2 adhesionSpread none contactModulus 2e+10 Pa");
+}
