@@ -95,6 +95,13 @@ def _by_class(table, column, selected):
     return [((lo, hi), last.where(dMin=lo, dMax=hi)) for lo, hi in classes]
 
 
+def _text(x):
+    """A number in its shortest exact form (0.0226, not
+    0.022599999999999999; 1000, not 1000.0)."""
+    x = float(x)
+    return "%d" % x if x.is_integer() and abs(x) < 1e15 else repr(x)
+
+
 def walls(statistics):
     """The patches of the statistics at their last time through which
     nothing escaped: the walls (an escape entry's impacts are all escapes,
@@ -120,10 +127,10 @@ def size_classes(statistics, patches=None):
     for (lo, hi), of in _by_class(statistics, "patch", patches):
         impacts = of.sum("impactParticles")
         captured = of.sum("captureParticles")
-        rows.append([lo, hi, "%.17g" % impacts,
-                     "%.17g" % of.sum("reboundParticles"),
-                     "%.17g" % captured, "%.17g" % of.sum("escapeParticles"),
-                     "%.17g" % (captured / impacts) if impacts else "nan"])
+        rows.append([lo, hi, _text(impacts),
+                     _text(of.sum("reboundParticles")),
+                     _text(captured), _text(of.sum("escapeParticles")),
+                     _text(captured / impacts) if impacts else "nan"])
     return tables.Table(SIZE_CLASS_COLUMNS, rows, statistics.source)
 
 
@@ -162,8 +169,8 @@ def grade_efficiency(grade, injectors=None):
     for (lo, hi), of in _by_class(grade, "injector", injectors):
         sums = [of.sum(name) for name in GRADE_COLUMNS[2:-1]]
         injected, captured = sums[1], sums[3]
-        fraction = "%.17g" % (captured / injected) if injected else "nan"
-        rows.append([lo, hi] + ["%.17g" % x for x in sums] + [fraction])
+        fraction = _text(captured / injected) if injected else "nan"
+        rows.append([lo, hi] + [_text(x) for x in sums] + [fraction])
     return tables.Table(GRADE_COLUMNS, rows, grade.source)
 
 
