@@ -86,11 +86,10 @@ std::string meant(const Magnitude& m, const double value)
             }
         );
     }
-    if
-    (
-        physical
-     && (named.empty() || physical < *std::min_element(named.begin(), named.end()))
-    )
+    const Magnitude::Slip* likeliest =
+        named.empty()
+      ? nullptr : *std::min_element(named.begin(), named.end());
+    if (physical && (!likeliest || physical < likeliest))
     {
         named.insert(named.begin(), physical);
     }
