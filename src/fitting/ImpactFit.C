@@ -197,10 +197,10 @@ void requireDetermined
         (
             keyword,
             type,
-            "the data do not determine this law's coefficients (a best fit"
-            " at a bound, such as gamma = 0 when the slow impacts rebound"
-            " faster than the restitution law allows, or speeds too alike"
-            " to tell its coefficients apart); " + change
+            "the data do not determine this law's coefficients (they cannot"
+            " be told apart, as a power law's c and n when the slow impacts"
+            " need no adhesion: c goes to 0 and n has no effect, or speeds"
+            " too alike); " + change
         );
     }
 }

@@ -178,3 +178,12 @@ def test_commands_say_what_is_missing(tmp_path, monkeypatch, capsys):
     assert "no rows of ['model2']; its injector column holds ['all']" \
         in err, err
     assert "outputByInjectorId yes" in err, err
+
+
+def test_numbers_in_their_shortest_exact_form():
+    assert statistics._text(0.0226) == "0.0226"
+    assert statistics._text(1000.0) == "1000"
+    assert statistics._text(-3) == "-3"
+    assert statistics._text(float("nan")) == "nan"
+    assert statistics._text(float("inf")) == "inf"
+    assert float(statistics._text(0.1 + 0.2)) == 0.1 + 0.2

@@ -58,6 +58,11 @@ def test_runs_cleanly(tutorial, case):
 def test_floor_captures_follow_the_settling(case):
     results = tables.read(os.path.join(case, "results.csv"))
     assert list(results["d"]) == [2e-6, 4e-6, 6e-6]
+    # The predictions from the case's numbers, worked out by hand: v_s =
+    # (2500 - 1.2041) d^2 9.81/(18 x 1.8133e-5) (mu = rhoInf nu), times
+    # L/(U H) = 0.02/(0.1 x 1e-3)
+    assert list(results["predicted"]) == pytest.approx(
+        [0.060083, 0.24033, 0.54075], rel=1e-4)
     for d, eta, predicted, se in zip(results["d"], results["eta"],
                                      results["predicted"], results["etaSE"]):
         assert 0.05 < predicted < 0.95, (d, predicted)
@@ -118,3 +123,8 @@ def test_comparison_refuses_another_case(tmp_path):
     assert "needs the settlingChannel tutorial's particle case" \
         in result.stderr, result.stderr
     assert "Traceback" not in result.stderr
+    missing = subprocess.run(["adhesiveWallPost", "settlingChannel",
+                              str(tmp_path / "none")], capture_output=True,
+                             text=True)
+    assert missing.returncode == 1 and "Traceback" not in missing.stderr, \
+        missing.stderr

@@ -787,6 +787,10 @@ void Foam::AdhesiveWallInteraction<CloudType>::setUpResuspension()
                 this->owner(),
                 [&](const dictionary& dict, const word& key, const scalar d)
                 {
+                    if (!(d > 0))
+                    {
+                        return;     // a distribution's minValue 0
+                    }
                     try
                     {
                         brachDunn::biasiAdhesion(0.5*d);

@@ -449,6 +449,10 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
 
     checkOptionConflicts(args);
+    if (tools::found(args, "plot"))
+    {
+        tools::checkPlotFile(tools::fileOption(args, "plot"));
+    }
     const word patchName(tools::text(args, "patch"));
     const tools::caseWallModel wallModel(args, patchName);
     const wallInteractionEntry& entry = wallModel.entry();

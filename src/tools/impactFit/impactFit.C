@@ -19,9 +19,10 @@ Usage
     \b impactFit -data FILE.csv [OPTIONS]
 
     Data: lines "diameter,speedIn,speedOut" (m, m/s, m/s; speedOut 0 for a
-    captured particle); further columns are ignored, '#' starts a comment, a
-    first line whose first field is not a number is a header; every other
-    field must be a finite number, nothing else.
+    captured particle); further columns are ignored (a row of more fields
+    than a header of three or more names stops: a decimal comma), '#'
+    starts a comment, a first line whose first field is not a number is a
+    header; every other field must be a finite number, nothing else.
 
     Materials, from the adhesive entry of a case's cloud properties that
     applies to -patch NAME (-dict FILE, else the release's default file in
@@ -170,7 +171,7 @@ std::vector<brachDunn::Measurement> readImpacts(const fileName& file)
                 << " diameter,speedIn,speedOut, each a finite number, found '"
                 << text.c_str() << "'" << nl << exit(FatalError);
         }
-        if (headerFields && countFields(text) > headerFields)
+        if (headerFields >= 3 && countFields(text) > headerFields)
         {
             FatalErrorInFunction
                 << file.c_str() << " line " << line << ": "
@@ -635,6 +636,10 @@ int main(int argc, char *argv[])
     // floating-point traps (OpenFOAM's FOAM_SIGFPE) here
     fedisableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
 
+    if (tools::found(args, "plot"))
+    {
+        tools::checkPlotFile(tools::fileOption(args, "plot"));
+    }
     const fileName dataFile(tools::fileOption(args, "data"));
     const std::vector<brachDunn::Measurement> data = readImpacts(dataFile);
     checkDiameters(args, dataFile, data);

@@ -104,8 +104,8 @@ def plot_settling(path, results):
 
 
 def run(case="."):
-    os.chdir(case)
     try:
+        os.chdir(case)
         for name in ("statistics.dat", "gradeEfficiency.dat"):
             path = os.path.join(statistics.output_folder(".", CLOUD), name)
             if not os.path.isfile(path):
