@@ -153,9 +153,12 @@ void sweep
     {
         for (const scalar angle : angles)
         {
+            // Rebounds joined by lines, captures (rebound ratio 0) as points
+            // of their own: no line across the critical speed
             std::ostringstream title;
             title << d << " m, " << angle << " deg";
-            series.push_back({title.str(), "linespoints", {}});
+            tools::plotSeries rebounds{title.str(), "linespoints", {}};
+            tools::plotSeries captures{title.str() + ", captured", "points", {}};
             for (const scalar v : speeds)
             {
                 const vector U
@@ -175,10 +178,17 @@ void sweep
                     << r.ut << ',' << r.R << ',' << r.gamma << ',' << r.WA
                     << ',' << (captured ? 1 : 0) << ',' << r.unOut << ','
                     << r.utOut << ',' << r.energyLoss << '\n';
-                series.back().points.push_back
+                (captured ? captures : rebounds).points.push_back
                 (
                     {v, captured ? 0 : r.unOut/r.un}
                 );
+            }
+            for (tools::plotSeries* part : {&rebounds, &captures})
+            {
+                if (!part->points.empty())
+                {
+                    series.push_back(*part);
+                }
             }
         }
     }
@@ -431,9 +441,11 @@ void plotSeries
         series,
         critical
       ? "set key outside right\nset grid\nset logscale x\n"
+        "set format x '%g'\nset format y '%g'\n"
         "set logscale y\nset xlabel 'particle diameter [m]'\n"
         "set ylabel 'critical speed [m/s]'\n"
       : "set key outside right\nset grid\nset logscale x\n"
+        "set format x '%g'\n"
         "set yrange [0:*]\nset xlabel 'incoming speed [m/s]'\n"
         "set ylabel 'rebound ratio Un''/un'\n"
     );
