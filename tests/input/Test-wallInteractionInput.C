@@ -441,6 +441,11 @@ std::vector<inputCase> cases()
                 {"sides", "wall", {"wall"}, true, false}
             },
             60},
+        {"removedDepositsCannotResuspend",
+            {set("", "capture remove"),
+             set("floor", "resuspension { type rockNRoll; w 0.5; }")},
+            {"keyword 'capture' = remove", "must be stick where an entry"
+             " resuspends its deposits (entry floor)"}},
         {"sizeClassesInMicrometres", {set("", "sizeClasses (2 5)")},
             {"keyword 'sizeClasses' = 2", "did you mean 2e-06 (2 um)"}},
         {"validExtremeValues", {set("", "extremeValues yes"), set("floor", "E 320")}, {}},

@@ -758,18 +758,9 @@ void Foam::AdhesiveWallInteraction<CloudType>::setUpResuspension()
     forAll(patches, patchi)
     {
         const wallInteractionEntry* entry = coeffs_.entries().entryOf(patchi);
+        // (capture remove with a resuspending entry stopped with the
+        // coefficients, wallInteractionCoeffs)
         resuspends[patchi] = entry && entry->resuspension();
-        if (resuspends[patchi] && coeffs_.removeCaptured())
-        {
-            checkedInput::fail
-            (
-                this->coeffs(), "capture", "remove",
-                "must be stick where an entry resuspends its deposits"
-                " (entry " + std::string(entry->name()) + " on patch "
-              + patches[patchi].name() + "): removed parcels cannot leave"
-                " the wall again"
-            );
-        }
         any = any || resuspends[patchi];
 
         // Biasi's fit of the adhesion spread holds below a radius of

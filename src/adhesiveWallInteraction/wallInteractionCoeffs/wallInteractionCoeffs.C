@@ -273,4 +273,20 @@ Foam::wallInteractionCoeffs::wallInteractionCoeffs
     {
         particle(coeffs, cloudParticle);
     }
+
+    // Deposits that may leave again must stay in the cloud: known from the
+    // coefficients alone (the tools see it too)
+    for (const wallInteractionEntry& entry : entries_.entries())
+    {
+        if (removeCaptured_ && entry.resuspension())
+        {
+            checkedInput::fail
+            (
+                coeffs, "capture", "remove",
+                "must be stick where an entry resuspends its deposits"
+                " (entry " + std::string(entry.name()) + "): removed parcels"
+                " cannot leave the wall again"
+            );
+        }
+    }
 }
