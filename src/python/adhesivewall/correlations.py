@@ -234,7 +234,8 @@ def settling_channel(settling_velocity, length, mean_velocity, height):
     The Mechanics of Aerosols, 1964): a particle without inertia moves with
     the gas plus v_s downwards, so the flux below it, psi (the stream
     function, u = dpsi/dy, v = -dpsi/dx), changes along its path at
-    dpsi/dt = (-v) u + u (v - v_s) = -u v_s, that is dpsi/dx = -v_s: it
+    dpsi/dt = (-v) u + u (v - v_s) = -u v_s, that is dpsi/dx = -v_s
+    where the gas moves downstream (u > 0: no recirculation): it
     reaches the floor (psi = 0) within L when it enters with psi < v_s L,
     a fraction v_s L/(U H) of the flux U H. Particles spread uniformly
     over the area of an inlet of uniform velocity enter uniformly over
