@@ -34,6 +34,28 @@ const ITstream& tokensOf
 }
 
 
+//- Where the items of a bracketed list start in tokens, (a b c) or
+//  OpenFOAM's sized N(a b c), its last token closing it; -1 when the
+//  tokens are not such a list
+label itemsStart(const ITstream& tokens)
+{
+    const label first = checkedInput::listStart(tokens);
+    return
+        first >= 0
+     && tokens.size() >= first + 2
+     && isPunctuation(tokens[tokens.size() - 1], token::END_LIST)
+      ? first + 1 : -1;
+}
+
+
+//- Whether a list's size prefix, if it has one, counts its n items
+bool prefixCounts(const ITstream& tokens, const label n)
+{
+    return
+        checkedInput::listStart(tokens) != 1 || tokens[0].labelToken() == n;
+}
+
+
 //- The entry of a required keyword
 const entry& required(const dictionary& dict, const word& keyword)
 {
@@ -224,13 +246,9 @@ Foam::scalarList Foam::checkedInput::readNumbers
         return values;
     }
     const ITstream& tokens = tokensOf(dict, *e, "a list of numbers");
-    // (a b c), or with OpenFOAM's size prefix: N(a b c)
-    const label first = listStart(tokens);
-    bool good =
-        first >= 0
-     && tokens.size() >= first + 2
-     && isPunctuation(tokens[tokens.size() - 1], token::END_LIST);
-    for (label i = first + 1; good && i < tokens.size() - 1; ++i)
+    const label start = itemsStart(tokens);
+    bool good = start >= 0;
+    for (label i = start; good && i < tokens.size() - 1; ++i)
     {
         good = tokens[i].isNumber() && std::isfinite(tokens[i].number());
         if (good)
@@ -238,7 +256,7 @@ Foam::scalarList Foam::checkedInput::readNumbers
             values.append(tokens[i].number());
         }
     }
-    if (!good || (first && tokens[0].labelToken() != values.size()))
+    if (!good || !prefixCounts(tokens, values.size()))
     {
         fail
         (
@@ -263,22 +281,15 @@ Foam::List<Foam::keyType> Foam::checkedInput::readKeys
         return List<keyType>();
     }
     const ITstream& tokens = tokensOf(dict, *e, expected.c_str());
-    // (a "b.*" c), or with OpenFOAM's size prefix: N(...), checked token by
-    // token before OpenFOAM's list reader sees them
-    const label first = listStart(tokens);
-    bool good =
-        first >= 0
-     && tokens.size() >= first + 2
-     && isPunctuation(tokens[tokens.size() - 1], token::END_LIST);
-    for (label i = first + 1; good && i < tokens.size() - 1; ++i)
+    // (a "b.*" c), checked token by token before OpenFOAM's list reader
+    // sees them
+    const label start = itemsStart(tokens);
+    bool good = start >= 0;
+    for (label i = start; good && i < tokens.size() - 1; ++i)
     {
         good = tokens[i].isWord() || tokens[i].isString();
     }
-    if
-    (
-        !good
-     || (first && tokens[0].labelToken() != tokens.size() - first - 2)
-    )
+    if (!good || !prefixCounts(tokens, tokens.size() - 1 - start))
     {
         fail(dict, keyword, entryText(*e), "must be " + expected);
     }
