@@ -41,6 +41,9 @@ double inSI(const double value, const Magnitude::Slip& slip)
 }
 
 
+} // End anonymous namespace
+
+
 //- "did you mean 3.2e+11 (320 GPa)?" for the first units (in the slips'
 //  order, the likelier first; as many as the magnitude's suggestions) in
 //  which the value lands in the model's range, else the first in which it
@@ -103,8 +106,6 @@ std::string meant(const Magnitude& m, const double value)
     }
     return text.empty() ? text : text + "?";
 }
-
-} // End anonymous namespace
 
 
 std::string unitMistake

@@ -36,25 +36,23 @@ Foam::scalar readGasValue
 )
 {
     using namespace Foam;
-    // A value not > 0 that is a unit mistake says what was meant (T 0,
-    // 0 degC), else that it must be > 0
     const scalar value = checkedInput::readNumber(dict, keyword);
-    const std::string mistake = brachDunn::unitMistake(m, keyword, value);
-    if (!(value > 0) && mistake.find("did you mean") == std::string::npos)
+    const bool extreme = checkedInput::readSwitch(dict, "extremeValues", false);
+    // A value not > 0 must be > 0, unless it is a unit mistake whose value
+    // meant the magnitude check names (T 0: 0 degC); taken as given
+    // (extremeValues) is no way past > 0
+    const bool mistakeNamed =
+        !brachDunn::unitMistake(m, keyword, value).empty()
+     && !brachDunn::meant(m, value).empty();
+    if (!(value > 0) && (extreme || !mistakeNamed))
     {
         readPositive(dict, keyword);
     }
     const std::string warning = checkedInput::checkMagnitude
     (
-        dict, keyword, value, m,
-        checkedInput::readSwitch(dict, "extremeValues", false),
+        dict, keyword, value, m, extreme,
         "extremeValues yes in " + dict.dictName()
     );
-    if (!(value > 0))
-    {
-        // taken as given (extremeValues) is no way past > 0
-        readPositive(dict, keyword);
-    }
     if (!warning.empty())
     {
         WarningInFunction
