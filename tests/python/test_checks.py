@@ -230,6 +230,18 @@ def test_table_rows_columns_and_replace(tmp_path):
     assert checks.columns(records, ["outcome", "diameter"]) == [
         ("capture", "2.58e-06"), ("rebound", "2.58e-06"),
         ("rebound", "4.9e-06")]
+    # Rows of one patch, and rows ordered by a number, not by its text
+    # ("3" sorts after "10" as text)
+    assert checks.columns(records, ["time", "un"], {"patch": "floor"}) == [
+        ("1e-5", "3"), ("2e-5", "3.5")]
+    assert checks.columns(records, ["patch"], sort_by="un") == [
+        ("ceiling",), ("floor",), ("floor",)]
+    unordered = tmp_path / "unordered.csv"
+    unordered.write_text("time,patch\n10,a\n3,a\n2e-1,b\n")
+    assert checks.columns(unordered, ["time"], {"patch": "a"}, "time") == [
+        ("3",), ("10",)]
+    with pytest.raises(KeyError, match="no column 'wall'"):
+        checks.columns(records, ["un"], {"wall": "floor"})
     data = tmp_path / "data.csv"
     data.write_text("diameter,speedIn,speedOut\n1e-6,1,0.5\n2e-6,3,2\n")
     assert checks.replace_value(data, 2, "speedIn", "1 2") == [
@@ -764,6 +776,12 @@ def test_subcommands_on_files(capsys, stats, tmp_path):
     assert run(capsys, "tableRows", records, "outcome") == (0, "3", "")
     assert run(capsys, "columns", records, "patch", "un")[1] == \
         "floor,3\nfloor,3.5\nceiling,1"
+    assert run(capsys, "columns", records, "patch=floor", "-sort", "un",
+               "time", "un")[1] == "1e-5,3\n2e-5,3.5"
+    assert run(capsys, "columns", records, "outcome=capture", "time")[1] \
+        == "1e-5"
+    assert run(capsys, "columns", records, "patch=floor")[0] == 1
+    assert run(capsys, "columns", records, "un", "-sort")[0] == 1
     assert run(capsys, "timeRange", stats)[1] == "1e-05 2e-05"
     assert run(capsys, "compareStatistics", stats, stats)[0] == 0
     field = tmp_path / "massStick"

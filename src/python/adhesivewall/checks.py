@@ -363,12 +363,21 @@ def table_rows(path, columns=()):
     return len(table)
 
 
-def columns(path, names):
-    """The rows of a table's columns named, in the order named, as text."""
+def columns(path, names, where=None, sort_by=None):
+    """The rows of a table's columns named, in the order named, as text;
+    only the rows whose columns equal the texts of `where` (a dict), in the
+    numeric order of the column `sort_by` when given (ties as written)."""
     from . import tables
     table = tables.read(path)
+    if where:
+        table = table.where(**where)
     values = [table.text(name) for name in names]
-    return list(zip(*values))
+    rows = list(zip(*values))
+    if sort_by is not None:
+        keys = [float(key) for key in table.text(sort_by)]
+        rows = [row for _, row in sorted(zip(keys, rows),
+                                         key=lambda pair: pair[0])]
+    return rows
 
 
 def replace_value(path, row, column, value):
@@ -1131,10 +1140,26 @@ def _table_rows(path, *names):
     print(table_rows(path, names))
 
 
-@command("columns", "FILE COLUMN...", 2, ANY)
-def _columns(path, *names):
-    """The columns named of a table, as CSV rows without a header."""
-    for row in columns(path, names):
+@command("columns", "FILE [COLUMN=TEXT...] [-sort COLUMN] COLUMN...", 2, ANY)
+def _columns(path, *arguments):
+    """The columns named of a table, as CSV rows without a header; only the
+    rows whose COLUMN reads TEXT, in the numeric order of -sort's column."""
+    where, sort_by, names = {}, None, []
+    arguments = list(arguments)
+    while arguments:
+        argument = arguments.pop(0)
+        if argument == "-sort":
+            if not arguments:
+                raise CheckError("-sort needs a column name")
+            sort_by = arguments.pop(0)
+        elif "=" in argument:
+            name, _, text = argument.partition("=")
+            where[name] = text
+        else:
+            names.append(argument)
+    if not names:
+        raise CheckError("no column named to print")
+    for row in columns(path, names, where, sort_by):
         print(",".join(row))
 
 
