@@ -839,3 +839,42 @@ def test_grade_efficiency_check_needs_every_impact_recorded(tmp_path):
                        "# capped at maxImpactRecords = 1\n")
     with pytest.raises(CheckError, match="capped"):
         checks.expected_grade_efficiency(str(tmp_path))
+
+
+def test_compare_records(tmp_path, capsys):
+    # The serial run's records against a run's written in two files (a
+    # restart) in another order, with processor-local face numbers
+    reference = tmp_path / "reference.csv"
+    reference.write_text(RECORDS)
+    header, *rows = RECORDS.splitlines()
+    rows = [row for row in rows if not row.startswith("#")]
+    renumbered = [row.replace(",floor,3,", ",floor,7,") for row in rows]
+    first, second = tmp_path / "first.csv", tmp_path / "second.csv"
+    first.write_text("\n".join([header, renumbered[2], renumbered[0]]) + "\n")
+    second.write_text("\n".join([header, renumbered[1]]) + "\n")
+    columns = ["time", "patch", "x", "un", "outcome"]
+    assert checks.compare_records(reference, [first, second], columns,
+                                  1e-9) == []
+    # face named: the renumbering is seen
+    assert checks.compare_records(reference, [first, second],
+                                  columns + ["face"], 1e-9)
+    # A record missing
+    assert "3 records" in checks.compare_records(
+        reference, [first], columns, 1e-9)[0]
+    # un 3.5 -> 3.5000001: beyond 1e-9 of the column's largest (3.5),
+    # within 1e-6
+    changed = tmp_path / "changed.csv"
+    changed.write_text(RECORDS.replace(",3.5,0.1,", ",3.5000001,0.1,"))
+    problems = checks.compare_records(reference, [changed], columns, 1e-9)
+    assert len(problems) == 1 and problems[0].startswith("un: 3.5 ")
+    assert checks.compare_records(reference, [changed], columns, 1e-6) == []
+    # An outcome differs
+    changed.write_text(RECORDS.replace(",capture,", ",rebound,"))
+    problems = checks.compare_records(reference, [changed], columns, 1e-9)
+    assert problems and all(p.startswith("outcome: ") for p in problems)
+    # The command: columns in one argument, the run's files after
+    assert run(capsys, "compareRecords", reference, "1e-9",
+               "time patch x un outcome", first, second)[:2] == \
+        (0, "the records agree")
+    assert run(capsys, "compareRecords", reference, "1e-9",
+               "time patch x un outcome", first)[0] == 1

@@ -271,6 +271,52 @@ def compare_totals(reference, path, columns, rtol=1e-12):
     return n, problems
 
 
+def compare_records(reference, paths, columns, rtol):
+    """The differences between the impact records of a reference run and
+    those of another run written in one file or several (e.g. before and
+    after a restart), in the columns named: the same number of records,
+    and after ordering both by those columns, numbers equal to rtol of the
+    column's largest magnitude in the reference (positions near 0 are
+    compared on the scale of the others), texts exactly; empty: none.
+    Processor-local columns (`face`) are left out by not naming them."""
+    from . import tables
+    is_number = tables.is_number
+    if not columns:
+        return ["no columns to compare"]
+    a = tables.read(reference)
+    parts = [tables.read(path) for path in paths]
+
+    def rows(table):
+        values = [table.text(column) for column in columns]
+        return list(zip(*values))
+    ref_rows = rows(a)
+    run_rows = [row for part in parts for row in rows(part)]
+    names = " ".join(str(path) for path in paths)
+    if len(run_rows) != len(ref_rows):
+        return [f"{len(ref_rows)} records in {reference}, "
+                f"{len(run_rows)} in {names}"]
+
+    def key(row):
+        return tuple((0, float(v), "") if is_number(v) else (1, 0.0, v)
+                     for v in row)
+    ref_rows.sort(key=key)
+    run_rows.sort(key=key)
+    scales = [max((abs(float(row[i])) for row in ref_rows
+                   if is_number(row[i])), default=0.0)
+              for i in range(len(columns))]
+    problems = []
+    for x, y in zip(ref_rows, run_rows):
+        for i, column in enumerate(columns):
+            if is_number(x[i]) and is_number(y[i]):
+                if abs(float(y[i]) - float(x[i])) > rtol * scales[i]:
+                    problems.append(f"{column}: {x[i]} in {reference}, "
+                                    f"{y[i]} in {names} (record {x})")
+            elif x[i] != y[i]:
+                problems.append(f"{column}: {x[i]} in {reference}, "
+                                f"{y[i]} in {names} (record {x})")
+    return problems
+
+
 def compare_last_rows(reference, path, columns, rtol=1e-12,
                       keys=("injector", "dMin", "dMax")):
     """The differences between the rows of two tables at their last times,
@@ -1114,6 +1160,16 @@ def _compare_totals(reference, path, rtol, *names):
     (over injectors and size classes)."""
     n, problems = compare_totals(reference, path, names, number(rtol, "RTOL"))
     _report(problems, f"{n} per-patch sums agree")
+
+
+@command("compareRecords", "REFERENCE RTOL 'COLUMN...' FILE...", 4, ANY)
+def _compare_records(reference, rtol, names, *paths):
+    """The impact records of a run (in one file or in several, e.g. before
+    and after a restart) are the reference's, in the columns named, in any
+    order: texts equal, numbers to RTOL of the column's largest."""
+    problems = compare_records(reference, paths, names.split(),
+                               number(rtol, "RTOL"))
+    _report(problems, "the records agree")
 
 
 @command("timeRange", "FILE", 1, 1)

@@ -97,7 +97,8 @@ class Table:
         return float(self[name].sum()) if self.rows else 0.0
 
 
-def _is_number(text):
+def is_number(text):
+    """True when the text reads as a number (nan and inf included)."""
     try:
         float(text)
         return True
@@ -134,7 +135,7 @@ def read(path, delimiter=None):
             # The first other line is the header unless it holds numbers
             # under a commented header (the model's .dat files)
             first = _split(line, "," if path.endswith(".csv") else None)[0]
-            if comment is None or not _is_number(first):
+            if comment is None or not is_number(first):
                 header = line
                 continue
             header = comment
