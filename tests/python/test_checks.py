@@ -878,3 +878,36 @@ def test_compare_records(tmp_path, capsys):
         (0, "the records agree")
     assert run(capsys, "compareRecords", reference, "1e-9",
                "time patch x un outcome", first)[0] == 1
+
+
+def test_surface_contacts(tmp_path, capsys):
+    # Impacts per patch (two injectors on the floor) against the contacts of
+    # surfaceContact.dat; an earlier time does not count
+    stats = statistics_file(tmp_path / "statistics.dat", [
+        {"time": "1e-05", "patch": "floor", "impactParcels": 1},
+        {"time": "2e-05", "patch": "floor", "injector": "1",
+         "impactParcels": 3},
+        {"time": "2e-05", "patch": "floor", "injector": "2",
+         "impactParcels": 2},
+        {"time": "2e-05", "patch": "ceiling", "impactParcels": 1},
+        {"time": "2e-05", "patch": "outlet", "impactParcels": 0}])
+    contacts = tmp_path / "surfaceContact.dat"
+
+    def write(floor, ceiling):
+        contacts.write_text(
+            "# adhesiveWallSurfaceContact of cloud kinematicCloud\n"
+            "# time\tpatch\tsurfaceContacts\tcentreContacts\n"
+            "1e-05\tfloor\t1\t0\n1e-05\tceiling\t0\t0\n"
+            f"2e-05\tfloor\t{floor[0]}\t{floor[1]}\n"
+            f"2e-05\tceiling\t{ceiling[0]}\t{ceiling[1]}\n")
+    write((5, 0), (0, 1))
+    assert checks.surface_contacts(stats, contacts) == (5, 1)
+    assert run(capsys, "surfaceContacts", stats, contacts)[:2] == (0, "5 1")
+    # A contact that is no impact, an impact that is no contact
+    write((6, 0), (0, 1))
+    with pytest.raises(CheckError, match="floor: 5 impacts"):
+        checks.surface_contacts(stats, contacts)
+    write((5, 0), (0, 0))
+    with pytest.raises(CheckError, match=r"ceiling: 1 impacts .* 0 \+ 0"):
+        checks.surface_contacts(stats, contacts)
+    assert run(capsys, "surfaceContacts", stats, contacts)[0] == 1

@@ -162,6 +162,30 @@ def statistic(path, column, patch=None, injector=None, dMin=None):
             "time") from None
 
 
+def surface_contacts(statistics_path, contacts_path):
+    """The contacts at the surface and at the centre (fallbacks) of
+    surfaceContact.dat at its last time, summed over the patches, after
+    checking that on each patch of statistics.dat the impacts are those
+    contacts (every contact an impact, counted once in each file); a
+    CheckError lists the patches where they are not."""
+    from . import tables
+    impacts = _last_rows(tables.read(statistics_path))
+    contacts = _last_rows(tables.read(contacts_path))
+    problems = []
+    for patch in impacts.unique("patch"):
+        counted = impacts.where(patch=patch).sum("impactParcels")
+        touched = contacts.where(patch=patch)
+        at_surface = touched.sum("surfaceContacts") if len(touched) else 0
+        at_centre = touched.sum("centreContacts") if len(touched) else 0
+        if counted != at_surface + at_centre:
+            problems.append(
+                f"{patch}: {fmt(counted)} impacts in {statistics_path}, "
+                f"{fmt(at_surface)} + {fmt(at_centre)} contacts in "
+                f"{contacts_path}")
+    _report(problems)
+    return contacts.sum("surfaceContacts"), contacts.sum("centreContacts")
+
+
 def statistic_rows(path, patch=None):
     """The number of rows of a statistics.dat at its last time (of the
     patch given); a CheckError when the file has no rows at all."""
@@ -1138,6 +1162,15 @@ def _statistic(path, column, patch="", injector="", dMin=""):
     """A column of a statistics.dat at its last time, summed over the rows
     selected (empty: any)."""
     print(fmt(statistic(path, column, patch, injector, dMin)))
+
+
+@command("surfaceContacts", "STATISTICS SURFACE_CONTACT", 2, 2)
+def _surface_contacts(statistics_path, contacts_path):
+    """On each patch the impacts of statistics.dat are the contacts of
+    surfaceContact.dat; prints the contacts 'at the surface' 'at the
+    centre' summed over the patches."""
+    at_surface, at_centre = surface_contacts(statistics_path, contacts_path)
+    print(fmt(at_surface), fmt(at_centre))
 
 
 @command("statisticRows", "FILE [PATCH]", 1, 2)
