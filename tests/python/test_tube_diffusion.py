@@ -12,6 +12,7 @@ wrong distribution (uniform in area, say) lies far beyond the bound.
 
 import math
 import os
+import shutil
 
 import pytest
 
@@ -141,3 +142,27 @@ def test_random_walk_reference_misses_wall_contacts_at_coarse_steps():
     mu = 0.3
     P, _ = tube.random_walk_penetration(mu, 5000, 10, 1200)
     assert P > tube.correlations.gormley_kennedy(mu) + 0.05
+
+
+def test_a_case_whose_parcels_settle_is_refused(tmp_path, monkeypatch):
+    # Gormley and Kennedy's penetration is for diffusion alone: the
+    # tutorial's own case feels no gravity; with gravity among its forces
+    # and g set, the comparison stops in one line saying why
+    source = os.path.join(os.path.dirname(__file__), "..", "..",
+                          "tutorials", "tubeDiffusion")
+    case = tmp_path / "tube"
+    shutil.copytree(source, case)
+    assert tube.settling_gravity(str(case)) == 0
+    properties = case / "constant" / "kinematicCloudProperties"
+    text = properties.read_text()
+    assert "    exactBrownianMotion { T $T; seed 1; }\n" in text
+    properties.write_text(text.replace(
+        "    exactBrownianMotion { T $T; seed 1; }\n",
+        "    exactBrownianMotion { T $T; seed 1; }\n    gravity;\n"))
+    assert tube.settling_gravity(str(case)) == 0       # g is (0 0 0)
+    g = case / "constant" / "g"
+    g.write_text(g.read_text().replace("(0 0 0)", "(0 -9.81 0)"))
+    assert tube.settling_gravity(str(case)) == pytest.approx(9.81, 1e-15)
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SystemExit, match="the parcels settle .* 9.81"):
+        tube.run(str(case))

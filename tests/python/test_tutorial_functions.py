@@ -2,6 +2,8 @@
 """The tutorials' own computations, on inputs whose answer is known."""
 
 import math
+import os
+import shutil
 
 import pytest
 
@@ -81,3 +83,38 @@ def test_yardstick_of_the_measured_curve_itself(tmp_path):
         tables.read_text("\n".join(lines) + "\n"), measured, simulated)}
     assert shifted["Stk50"][4] == pytest.approx(0.2)
     assert bend.verdict(shifted["StkAt24.5"][4], 0.15) == "fail"
+
+
+def test_settling_channel_takes_the_slip_of_the_cloud_drag(tmp_path):
+    # The prediction's settling velocity has the slip of the case's drag:
+    # none with the tutorial's sphereDrag, slipSphereDrag's given mean
+    # free path and coefficients, or the one of its p and T (kinetic
+    # theory with the carrier's viscosity, as the force computes it)
+    from adhesivewall import correlations
+    from adhesivewall.tutorials import settling_channel
+    source = os.path.join(os.path.dirname(__file__), "..", "..",
+                          "tutorials", "settlingChannel", "particles")
+    case = tmp_path / "particles"
+    shutil.copytree(source, case)
+    mu = 1.8e-5
+    assert settling_channel.slip(str(case), mu) == (0.0, "Davies")
+    properties = case / "constant" / "kinematicCloudProperties"
+    text = properties.read_text()
+    assert "        sphereDrag;\n" in text
+
+    def drag(entry):
+        properties.write_text(text.replace("        sphereDrag;\n",
+                                           f"        {entry}\n"))
+        return settling_channel.slip(str(case), mu)
+    assert drag("slipSphereDrag { meanFreePath 6.65e-8; }") == \
+        (6.65e-8, "Davies")
+    assert drag("slipSphereDrag { slipCoefficients AllenRaabe; "
+                "meanFreePath 6.73e-8; }") == (6.73e-8, "AllenRaabe")
+    # Air at 293.15 K and 101325 Pa with mu 1.8e-5: 64.7 nm by Jennings'
+    # formula worked by hand (rho = p M/(R T) = 1.2041 kg/m^3)
+    free_path, coefficients = drag("slipSphereDrag { p 101325; T 293.15; }")
+    assert coefficients == "Davies"
+    assert free_path == pytest.approx(
+        math.sqrt(math.pi / 8) * mu
+        / (0.4987445 * math.sqrt(1.2041 * 101325)), rel=1e-4)
+    assert free_path == pytest.approx(6.475e-8, rel=1e-3)

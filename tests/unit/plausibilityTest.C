@@ -80,8 +80,11 @@ TEST(Plausibility, DensityDiameterAndSurfaceEnergy)
     EXPECT_TRUE(has(stops(magnitude::diameter, "d", 5), "5e-06 (5 um)"));
     EXPECT_TRUE(has(stops(magnitude::diameter, "d", 1e-10), "smaller than any particle"));
     // millimetre to centimetre particles of coal, sprays and beds are real
+    // (v1912's reactingHeterogenousParcelFoam tutorial: 11 mm); sub-micron
+    // sizes typed in um are not (0.1 um typed 0.1: 10 cm; 0.02 um: 2 cm)
     EXPECT_EQ(stops(magnitude::diameter, "d", 0.011), "");
-    EXPECT_EQ(stops(magnitude::diameter, "d", 0.1), "");
+    EXPECT_TRUE(has(stops(magnitude::diameter, "d", 0.1), "1e-07 (0.1 um)"));
+    EXPECT_NE(stops(magnitude::diameter, "d", 0.02), "");
     EXPECT_NE(stops(magnitude::diameter, "d", 0.5), "");
     // a suggestion beyond the doubles is no suggestion, and no crash
     EXPECT_NE(stops(magnitude::diameter, "d", 1e-300), "");

@@ -87,9 +87,6 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
 template<class CloudType>
 void Foam::AdhesiveWallInteraction<CloudType>::checkSurfaceContactPlace() const
 {
-    // (the TypeName of AdhesiveWallSurfaceContact)
-    const word surfaceContactType("adhesiveWallSurfaceContact");
-
     // A cloudFunctions block in subModels is never read: the run would go
     // on with contact at the centre, and only missing log lines tell
     const entry* functions = compat::findEntry
@@ -102,19 +99,12 @@ void Foam::AdhesiveWallInteraction<CloudType>::checkSurfaceContactPlace() const
     }
     for (const entry& function : functions->dict())
     {
-        const entry* type =
-            function.isDict()
-          ? compat::findEntry(function.dict(), "type") : nullptr;
-        if
-        (
-            type && type->isStream()
-         && word(type->stream()) == surfaceContactType
-        )
+        if (wallInteractionCloud::isSurfaceContact(function))
         {
             checkedInput::fail
             (
                 functions->dict(), function.keyword(),
-                "{ type " + surfaceContactType + "; ... }",
+                "{ type adhesiveWallSurfaceContact; ... }",
                 "a cloud function in subModels, where OpenFOAM does not read"
                 " cloudFunctions: move the cloudFunctions block to the top"
                 " level of the cloud's properties"

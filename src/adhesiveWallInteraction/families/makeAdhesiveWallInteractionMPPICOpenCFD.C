@@ -4,9 +4,12 @@
 #include "AdhesiveWallInteraction.H"
 #include "AdhesiveWallSurfaceContact.H"
 #include "SlipSphereDragForce.H"
+#include "ExactBrownianMotionRefused.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicKinematicMPPICCloud);
 makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicKinematicMPPICCloud);
 makeParticleForceModelType(SlipSphereDragForce, basicKinematicMPPICCloud);
-// exactBrownianMotion is not registered for MPPIC clouds: their packing
-// models move parcels outside the sub-step loop the exact step is written for
+// exactBrownianMotion is not built for MPPIC clouds (their packing models
+// move parcels outside the sub-step loop the exact step is written for):
+// selected there, it stops saying so
+makeParticleForceModelType(ExactBrownianMotionRefused, basicKinematicMPPICCloud);

@@ -6,9 +6,11 @@ there: an analytic result, not a measurement).
 Per injector (one per diameter), the parcels captured on the floor from
 the model's statistics (statistics.dat) over those injected
 (gradeEfficiency.dat), against min(1, v_s L/(U H)) with v_s Stokes'
-settling velocity with buoyancy (aerosol.settling_velocity, no slip: the
-case's sphereDrag), L and H the channel's length and height (the mesh's
-points) and U the inlet's uniform velocity:
+settling velocity with buoyancy (aerosol.settling_velocity; with
+Cunningham's slip correction when the drag is slipSphereDrag, with its
+mean free path and coefficients; none with the tutorial's sphereDrag), L
+and H the channel's length and height (the mesh's points) and U the
+inlet's uniform velocity:
 
     results.csv     per diameter: d, vs, predicted, eta (floor captures /
                     injected), etaSE (binomial standard error), the
@@ -43,6 +45,25 @@ def channel(case="."):
     return max(xs) - min(xs), max(ys) - min(ys), float(U)
 
 
+def slip(case, mu):
+    """(mean free path [m], Cunningham coefficients) of the cloud's drag:
+    slipSphereDrag's (its meanFreePath, or from its p and T by kinetic
+    theory with the carrier's viscosity mu, as the force computes it), or
+    no slip (0, Davies) with OpenFOAM's sphereDrag."""
+    forces = foam.dictionary("constant/kinematicCloudProperties",
+                             "subModels/particleForces", case=case)
+    drag = forces.get("slipSphereDrag")
+    if drag is None:
+        return 0.0, "Davies"
+    drag = drag if isinstance(drag, dict) else {}
+    coefficients = str(drag.get("slipCoefficients", "Davies"))
+    if "meanFreePath" in drag:
+        return float(drag["meanFreePath"]), coefficients
+    return (correlations.mean_free_path(
+        mu, float(drag["p"]), float(drag["T"]),
+        float(drag.get("molarMass", 0.0289647))), coefficients)
+
+
 def result_rows(case="."):
     """One row per injector, in the order of the cloud's injectors."""
     props = "constant/kinematicCloudProperties"
@@ -53,6 +74,7 @@ def result_rows(case="."):
                                   case=case))
     gravity = math.sqrt(sum(float(c) ** 2 for c in foam.dictionary(
         "constant/g", "value", case=case)))
+    mean_free_path, coefficients = slip(case, mu)
     L, H, U = channel(case)
     stats = statistics.read_statistics(case, CLOUD)
     grade = statistics.read_grade_efficiency(case, CLOUD).last_time()
@@ -62,7 +84,8 @@ def result_rows(case="."):
     for name, injector in injectors.items():
         d = float(injector["sizeDistribution"]["fixedValueDistribution"]
                   ["value"])
-        vs = aerosol.settling_velocity(d, rho_p, rho_c, mu, gravity, 0.0)
+        vs = aerosol.settling_velocity(d, rho_p, rho_c, mu, gravity,
+                                       mean_free_path, coefficients)
         inside = grade.where(dMin=lambda lo: float(lo) <= d,
                              dMax=lambda hi: d < float(hi))
         if len(inside) != 1:

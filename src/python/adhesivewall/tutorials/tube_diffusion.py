@@ -243,7 +243,8 @@ def result_rows(tube, case="."):
         g = grade.where(injector=str(injector_id))
         if len(g) != 1:
             raise ValueError(f"gradeEfficiency: {len(g)} rows of injector "
-                             f"{injector_id} at the last time")
+                             f"{injector_id} at the last time (sizeClasses "
+                             "split it)")
         injected = g.sum("injectedParcels")
         airborne = n - deposited - outlet - inlet
         if injected != n or g.sum("airborneParcels") != airborne \
@@ -336,16 +337,42 @@ def plot_penetration(path, results, forces):
     plots.save(fig, path)
 
 
+def settling_gravity(case="."):
+    """|g| when the cloud's forces include gravity, else 0: Gormley and
+    Kennedy's penetration is that of diffusion alone."""
+    forces = foam.dictionary("constant/kinematicCloudProperties",
+                             "subModels/particleForces", case=case)
+    if "gravity" not in forces:
+        return 0.0
+    g = foam.dictionary("constant/g", "value", case=case)
+    return math.sqrt(sum(float(c) ** 2 for c in g))
+
+
 def run(case="."):
-    os.chdir(case)
-    tube = Tube()
-    _, forces = settings()
-    for name in ("statistics.dat", "gradeEfficiency.dat"):
-        path = os.path.join(statistics.output_folder(".", CLOUD), name)
-        if not os.path.isfile(path):
-            raise FileNotFoundError(f"no {path}: run ./Allrun")
-    deviation = poiseuille_deviation(tube)
-    tables.write_csv("results.csv", RESULT_COLUMNS, result_rows(tube))
+    try:
+        os.chdir(case)
+        tube = Tube()
+        _, forces = settings()
+        g = settling_gravity()
+        if g > 0:
+            raise ValueError(
+                f"the parcels settle (gravity among the forces, |g| = {g:g} "
+                "m/s^2): Gormley and Kennedy's penetration is that of "
+                "diffusion alone")
+        for name in ("statistics.dat", "gradeEfficiency.dat"):
+            path = os.path.join(statistics.output_folder(".", CLOUD), name)
+            if not os.path.isfile(path):
+                raise FileNotFoundError(f"no {path}: run ./Allrun")
+        deviation = poiseuille_deviation(tube)
+        rows = result_rows(tube)
+    except (RuntimeError, KeyError, ValueError, OSError) as err:
+        raise SystemExit(
+            f"adhesiveWallPost tubeDiffusion: {err}\nThis comparison needs "
+            "the tubeDiffusion tutorial's case (its tube, its fixed-size "
+            "injectors, diffusion alone, no sizeClasses); in a case of your "
+            "own, leave it out of Allrun.post and use adhesiveWallPost "
+            "gradeEfficiency or sizeClasses") from None
+    tables.write_csv("results.csv", RESULT_COLUMNS, rows)
     results = tables.read("results.csv")
     lines = headline(results, tube, forces, deviation)
     with open("log.table", "w") as f:
