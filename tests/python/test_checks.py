@@ -242,6 +242,12 @@ def test_table_rows_columns_and_replace(tmp_path):
         ("3",), ("10",)]
     with pytest.raises(KeyError, match="no column 'wall'"):
         checks.columns(records, ["un"], {"wall": "floor"})
+    # Sorting by a text or a NaN names the column
+    with pytest.raises(CheckError, match="sort column 'patch' value 'floor'"):
+        checks.columns(records, ["un"], sort_by="patch")
+    unordered.write_text("time,patch\n10,a\nnan,a\n")
+    with pytest.raises(CheckError, match="a NaN in sort column 'time'"):
+        checks.columns(unordered, ["patch"], sort_by="time")
     data = tmp_path / "data.csv"
     data.write_text("diameter,speedIn,speedOut\n1e-6,1,0.5\n2e-6,3,2\n")
     assert checks.replace_value(data, 2, "speedIn", "1 2") == [
@@ -866,12 +872,33 @@ def test_compare_records(tmp_path, capsys):
     changed = tmp_path / "changed.csv"
     changed.write_text(RECORDS.replace(",3.5,0.1,", ",3.5000001,0.1,"))
     problems = checks.compare_records(reference, [changed], columns, 1e-9)
-    assert len(problems) == 1 and problems[0].startswith("un: 3.5 ")
+    assert len(problems) == 2
+    assert problems[0].startswith("record ('2e-5', 'floor', '0', '3.5', "
+                                  "'rebound') of ")
+    assert "3.5000001" in problems[1]
     assert checks.compare_records(reference, [changed], columns, 1e-6) == []
+    # A NaN in either compares equal to nothing; no records is no check
+    changed.write_text(RECORDS.replace(",3.5,0.1,", ",nan,0.1,"))
+    assert "a NaN in" in checks.compare_records(
+        reference, [changed], columns, 1e-9)[0]
+    assert "a NaN in" in checks.compare_records(
+        changed, [reference], columns, 1e-9)[0]
+    empty = tmp_path / "empty.csv"
+    empty.write_text(header + "\n")
+    assert "nothing to compare" in checks.compare_records(
+        empty, [empty], columns, 1e-9)[0]
     # An outcome differs
     changed.write_text(RECORDS.replace(",capture,", ",rebound,"))
     problems = checks.compare_records(reference, [changed], columns, 1e-9)
-    assert problems and all(p.startswith("outcome: ") for p in problems)
+    assert len(problems) == 2 and "'capture'" in problems[0]
+    # Positions equal but for rounding, in an order that sorting by value
+    # would pair wrongly (x 7.8e-4 written both ways, y in turn)
+    grid = tmp_path / "grid.csv"
+    grid.write_text("x,y\n780e-6,292e-6\n780e-6,376e-6\n")
+    rounded = tmp_path / "rounded.csv"
+    rounded.write_text("x,y\n0.00078,0.000376\n0.000780000000000001,"
+                       "0.000292\n")
+    assert checks.compare_records(grid, [rounded], ["x", "y"], 1e-9) == []
     # The command: columns in one argument, the run's files after
     assert run(capsys, "compareRecords", reference, "1e-9",
                "time patch x un outcome", first, second)[:2] == \
@@ -911,3 +938,12 @@ def test_surface_contacts(tmp_path, capsys):
     with pytest.raises(CheckError, match=r"ceiling: 1 impacts .* 0 \+ 0"):
         checks.surface_contacts(stats, contacts)
     assert run(capsys, "surfaceContacts", stats, contacts)[0] == 1
+    # Contacts on a patch the statistics do not hold; files of other times
+    write((5, 0), (0, 1))
+    contacts.write_text(contacts.read_text() + "2e-05\tsides\t2\t0\n")
+    with pytest.raises(CheckError, match=r"sides: 0 impacts .* 2 \+ 0"):
+        checks.surface_contacts(stats, contacts)
+    write((5, 0), (0, 1))
+    contacts.write_text(contacts.read_text().replace("2e-05", "3e-05"))
+    with pytest.raises(CheckError, match="last times 2e-05 .* 3e-05"):
+        checks.surface_contacts(stats, contacts)

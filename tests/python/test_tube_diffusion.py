@@ -166,3 +166,23 @@ def test_a_case_whose_parcels_settle_is_refused(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     with pytest.raises(SystemExit, match="the parcels settle .* 9.81"):
         tube.run(str(case))
+
+
+def test_one_row_per_injector_or_a_stop_saying_why():
+    # The tutorial has a size per injector: sizeClasses that split one are
+    # not its case (said with the route to gradeEfficiency); no row at all
+    # is another kind of stop
+    from adhesivewall import tables
+    from adhesivewall.tutorials import NotThisCase, stop
+    grade = tables.Table(["injector", "dMin", "injectedParcels"],
+                         [("1", "0", "5"), ("2", "0", "3"), ("2", "1e-6", "4")])
+    assert tube.injector_row(grade, 1).sum("injectedParcels") == 5
+    with pytest.raises(NotThisCase, match="2 rows of injector 2"):
+        tube.injector_row(grade, 2)
+    with pytest.raises(ValueError, match="no row of injector 3") as err:
+        tube.injector_row(grade, 3)
+    assert not isinstance(err.value, NotThisCase)
+    assert "gradeEfficiency or sizeClasses" in str(
+        stop("tubeDiffusion", NotThisCase("split"), "its case"))
+    assert "gradeEfficiency or sizeClasses" not in str(
+        stop("tubeDiffusion", FileNotFoundError("no file"), "its case"))

@@ -118,3 +118,8 @@ def test_settling_channel_takes_the_slip_of_the_cloud_drag(tmp_path):
         math.sqrt(math.pi / 8) * mu
         / (0.4987445 * math.sqrt(1.2041 * 101325)), rel=1e-4)
     assert free_path == pytest.approx(6.475e-8, rel=1e-3)
+    # Neither a mean free path nor p and T (the solver would stop): said
+    with pytest.raises(ValueError, match="neither meanFreePath nor p and T"):
+        drag("slipSphereDrag;")
+    with pytest.raises(ValueError, match="neither meanFreePath nor p and T"):
+        drag("slipSphereDrag { p 101325; }")

@@ -171,12 +171,18 @@ def surface_contacts(statistics_path, contacts_path):
     from . import tables
     impacts = _last_rows(tables.read(statistics_path))
     contacts = _last_rows(tables.read(contacts_path))
+    times = (impacts.text("time")[0], contacts.text("time")[0])
+    if float(times[0]) != float(times[1]):
+        raise CheckError(f"last times {times[0]} in {statistics_path}, "
+                         f"{times[1]} in {contacts_path}")
     problems = []
-    for patch in impacts.unique("patch"):
+    patches = impacts.unique("patch")
+    patches += [p for p in contacts.unique("patch") if p not in patches]
+    for patch in patches:
         counted = impacts.where(patch=patch).sum("impactParcels")
         touched = contacts.where(patch=patch)
-        at_surface = touched.sum("surfaceContacts") if len(touched) else 0
-        at_centre = touched.sum("centreContacts") if len(touched) else 0
+        at_surface = touched.sum("surfaceContacts")
+        at_centre = touched.sum("centreContacts")
         if counted != at_surface + at_centre:
             problems.append(
                 f"{patch}: {fmt(counted)} impacts in {statistics_path}, "
@@ -298,11 +304,12 @@ def compare_totals(reference, path, columns, rtol=1e-12):
 def compare_records(reference, paths, columns, rtol):
     """The differences between the impact records of a reference run and
     those of another run written in one file or several (e.g. before and
-    after a restart), in the columns named: the same number of records,
-    and after ordering both by those columns, numbers equal to rtol of the
-    column's largest magnitude in the reference (positions near 0 are
-    compared on the scale of the others), texts exactly; empty: none.
-    Processor-local columns (`face`) are left out by not naming them."""
+    after a restart), in the columns named, in any order: each reference
+    record must match one of the run's, texts exactly and numbers to rtol
+    of the column's largest magnitude in the reference (positions near 0
+    are compared on the scale of the others), and none may be left over;
+    empty: none. Processor-local columns (`face`) are left out by not
+    naming them."""
     from . import tables
     is_number = tables.is_number
     if not columns:
@@ -316,28 +323,37 @@ def compare_records(reference, paths, columns, rtol):
     ref_rows = rows(a)
     run_rows = [row for part in parts for row in rows(part)]
     names = " ".join(str(path) for path in paths)
+    if not ref_rows:
+        return [f"no records in {reference}: nothing to compare"]
     if len(run_rows) != len(ref_rows):
         return [f"{len(ref_rows)} records in {reference}, "
                 f"{len(run_rows)} in {names}"]
-
-    def key(row):
-        return tuple((0, float(v), "") if is_number(v) else (1, 0.0, v)
-                     for v in row)
-    ref_rows.sort(key=key)
-    run_rows.sort(key=key)
+    # A NaN would compare as equal to anything
+    for where, table_rows in ((reference, ref_rows), (names, run_rows)):
+        for row in table_rows:
+            if any(is_number(v) and math.isnan(float(v)) for v in row):
+                return [f"a NaN in {where}: record {row}"]
     scales = [max((abs(float(row[i])) for row in ref_rows
                    if is_number(row[i])), default=0.0)
               for i in range(len(columns))]
+
+    def matches(x, y):
+        return all(
+            abs(float(y[i]) - float(x[i])) <= rtol * scales[i]
+            if is_number(x[i]) and is_number(y[i]) else x[i] == y[i]
+            for i in range(len(columns)))
+    # Matched one by one (sorting would pair neighbours wrongly where a
+    # column's values differ by rounding only)
+    left = list(run_rows)
     problems = []
-    for x, y in zip(ref_rows, run_rows):
-        for i, column in enumerate(columns):
-            if is_number(x[i]) and is_number(y[i]):
-                if abs(float(y[i]) - float(x[i])) > rtol * scales[i]:
-                    problems.append(f"{column}: {x[i]} in {reference}, "
-                                    f"{y[i]} in {names} (record {x})")
-            elif x[i] != y[i]:
-                problems.append(f"{column}: {x[i]} in {reference}, "
-                                f"{y[i]} in {names} (record {x})")
+    for x in ref_rows:
+        found = next((k for k, y in enumerate(left) if matches(x, y)), None)
+        if found is None:
+            problems.append(f"record {x} of {reference}: none in {names}")
+        else:
+            del left[found]
+    problems += [f"record {y} of {names}: none in {reference}"
+                 for y in left]
     return problems
 
 
@@ -444,7 +460,10 @@ def columns(path, names, where=None, sort_by=None):
     values = [table.text(name) for name in names]
     rows = list(zip(*values))
     if sort_by is not None:
-        keys = [float(key) for key in table.text(sort_by)]
+        keys = [number(key, f"{path}: sort column '{sort_by}' value")
+                for key in table.text(sort_by)]
+        if any(math.isnan(key) for key in keys):
+            raise CheckError(f"{path}: a NaN in sort column '{sort_by}'")
         rows = [row for _, row in sorted(zip(keys, rows),
                                          key=lambda pair: pair[0])]
     return rows
@@ -1232,7 +1251,8 @@ def _table_rows(path, *names):
 @command("columns", "FILE [COLUMN=TEXT...] [-sort COLUMN] COLUMN...", 2, ANY)
 def _columns(path, *arguments):
     """The columns named of a table, as CSV rows without a header; only the
-    rows whose COLUMN reads TEXT, in the numeric order of -sort's column."""
+    rows whose COLUMN reads TEXT as written (none: no output; 1e-5 does not
+    match 1e-05), in the numeric order of -sort's column."""
     where, sort_by, names = {}, None, []
     arguments = list(arguments)
     while arguments:

@@ -8,6 +8,7 @@ tokenizer of OpenFOAM's syntax (words, numbers, strings, `{}` dictionaries,
 `()` lists, the `n{value}` uniform list).
 """
 
+import math
 import os
 import re
 import subprocess
@@ -183,6 +184,12 @@ def body(path):
     """A field file's text after its FoamFile header (for tokens and
     parse)."""
     return _body(path)
+
+
+def gravity(case="."):
+    """|g| of the case's constant/g [m/s^2]."""
+    return math.sqrt(sum(float(c) ** 2 for c in
+                         dictionary("constant/g", "value", case=case)))
 
 
 def list_file(path):

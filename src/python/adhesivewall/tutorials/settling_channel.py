@@ -21,10 +21,10 @@ inlet's uniform velocity:
     adhesiveWallPost settlingChannel [CASE]    (CASE: the particle case)
 """
 
-import math
 import os
 
 from .. import aerosol, correlations, curves, foam, statistics, tables
+from . import NotThisCase, stop
 
 CLOUD = "kinematicCloud"
 RESULT_COLUMNS = ["d", "vs", "predicted", "eta", "etaSE", "floorParcels",
@@ -41,7 +41,7 @@ def channel(case="."):
     kind, (U, _, _) = foam.dictionary("0/U", "boundaryField/inlet/value",
                                       case=case)
     if kind != "uniform":
-        raise ValueError(f"0/U: the inlet's value is {kind}, not uniform")
+        raise NotThisCase(f"0/U: the inlet's value is {kind}, not uniform")
     return max(xs) - min(xs), max(ys) - min(ys), float(U)
 
 
@@ -59,6 +59,9 @@ def slip(case, mu):
     coefficients = str(drag.get("slipCoefficients", "Davies"))
     if "meanFreePath" in drag:
         return float(drag["meanFreePath"]), coefficients
+    if "p" not in drag or "T" not in drag:
+        raise ValueError("slipSphereDrag in particleForces: neither "
+                         "meanFreePath nor p and T (the solver stops on it)")
     return (correlations.mean_free_path(
         mu, float(drag["p"]), float(drag["T"]),
         float(drag.get("molarMass", 0.0289647))), coefficients)
@@ -72,8 +75,7 @@ def result_rows(case="."):
                              case=case))
     mu = rho_c * float(foam.value("constant/transportProperties", "nu",
                                   case=case))
-    gravity = math.sqrt(sum(float(c) ** 2 for c in foam.dictionary(
-        "constant/g", "value", case=case)))
+    gravity = foam.gravity(case)
     mean_free_path, coefficients = slip(case, mu)
     L, H, U = channel(case)
     stats = statistics.read_statistics(case, CLOUD)
@@ -82,14 +84,18 @@ def result_rows(case="."):
                                 case=case)
     rows = []
     for name, injector in injectors.items():
-        d = float(injector["sizeDistribution"]["fixedValueDistribution"]
-                  ["value"])
+        try:
+            d = float(injector["sizeDistribution"]["fixedValueDistribution"]
+                      ["value"])
+        except (KeyError, TypeError):
+            raise NotThisCase(f"injector {name}: not of one fixed size "
+                              "(sizeDistribution fixedValue)") from None
         vs = aerosol.settling_velocity(d, rho_p, rho_c, mu, gravity,
                                        mean_free_path, coefficients)
         inside = grade.where(dMin=lambda lo: float(lo) <= d,
                              dMax=lambda hi: d < float(hi))
         if len(inside) != 1:
-            raise ValueError(f"{name}: d = {d} is in {len(inside)} size "
+            raise NotThisCase(f"{name}: d = {d} is in {len(inside)} size "
                              "classes of gradeEfficiency.dat: sizeClasses "
                              "must give each injector's size a class")
         injected = inside.sum("injectedParcels")
@@ -134,12 +140,11 @@ def run(case="."):
             if not os.path.isfile(path):
                 raise FileNotFoundError(f"no {path}: run ./Allrun")
         rows = result_rows(".")
-    except (RuntimeError, KeyError, ValueError, OSError) as err:
-        raise SystemExit(
-            f"adhesiveWallPost settlingChannel: {err}\nThis comparison needs "
-            "the settlingChannel tutorial's particle case (its inlet, floor "
-            "and fixed-size injectors); in a case of your own, leave it out "
-            "of Allrun.post") from None
+    except (RuntimeError, ValueError, OSError) as err:
+        raise stop("settlingChannel", err, "the settlingChannel tutorial's "
+                   "particle case (its uniform inlet, its floor, its "
+                   "fixed-size injectors each in a size class of its own)"
+                   ) from None
     tables.write_csv("results.csv", RESULT_COLUMNS, rows)
     results = tables.read("results.csv")
     lines = headline(results)

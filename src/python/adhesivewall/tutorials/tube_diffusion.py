@@ -30,6 +30,7 @@ import os
 import random
 
 from .. import correlations, curves, foam, statistics, tables
+from . import NotThisCase, stop
 
 CLOUD = "kinematicCloud"
 # The verdict: |P - P_GK| within the larger of TOLERANCE and SE_FACTOR
@@ -230,6 +231,22 @@ def verdict(outlet, airborne, parcels, gk, se):
         else "fail"
 
 
+def injector_row(grade, injector_id):
+    """The grade efficiency's row of an injector at the last time: one,
+    since the tutorial has a size per injector and no sizeClasses."""
+    rows = grade.where(injector=str(injector_id))
+    if len(rows) > 1:
+        raise NotThisCase(f"gradeEfficiency.dat: {len(rows)} rows of "
+                          f"injector {injector_id} at the last time "
+                          "(sizeClasses split its size)")
+    if not rows:
+        raise ValueError(f"gradeEfficiency.dat: no row of injector "
+                         f"{injector_id} at the last time (the model "
+                         "writes one per injector with outputByInjectorId "
+                         "yes)")
+    return rows
+
+
 def result_rows(tube, case="."):
     last = statistics.read_statistics(case, CLOUD).last_time()
     grade = statistics.read_grade_efficiency(case, CLOUD).last_time()
@@ -240,11 +257,7 @@ def result_rows(tube, case="."):
         outlet = statistics.final(of, "escapeParcels", patch="outlet")
         inlet = statistics.final(of, "escapeParcels", patch="inlet")
         n = len(foam.list_file(os.path.join(case, "constant", path)))
-        g = grade.where(injector=str(injector_id))
-        if len(g) != 1:
-            raise ValueError(f"gradeEfficiency: {len(g)} rows of injector "
-                             f"{injector_id} at the last time (sizeClasses "
-                             "split it)")
+        g = injector_row(grade, injector_id)
         injected = g.sum("injectedParcels")
         airborne = n - deposited - outlet - inlet
         if injected != n or g.sum("airborneParcels") != airborne \
@@ -342,10 +355,7 @@ def settling_gravity(case="."):
     Kennedy's penetration is that of diffusion alone."""
     forces = foam.dictionary("constant/kinematicCloudProperties",
                              "subModels/particleForces", case=case)
-    if "gravity" not in forces:
-        return 0.0
-    g = foam.dictionary("constant/g", "value", case=case)
-    return math.sqrt(sum(float(c) ** 2 for c in g))
+    return foam.gravity(case) if "gravity" in forces else 0.0
 
 
 def run(case="."):
@@ -355,7 +365,7 @@ def run(case="."):
         _, forces = settings()
         g = settling_gravity()
         if g > 0:
-            raise ValueError(
+            raise NotThisCase(
                 f"the parcels settle (gravity among the forces, |g| = {g:g} "
                 "m/s^2): Gormley and Kennedy's penetration is that of "
                 "diffusion alone")
@@ -365,13 +375,10 @@ def run(case="."):
                 raise FileNotFoundError(f"no {path}: run ./Allrun")
         deviation = poiseuille_deviation(tube)
         rows = result_rows(tube)
-    except (RuntimeError, KeyError, ValueError, OSError) as err:
-        raise SystemExit(
-            f"adhesiveWallPost tubeDiffusion: {err}\nThis comparison needs "
-            "the tubeDiffusion tutorial's case (its tube, its fixed-size "
-            "injectors, diffusion alone, no sizeClasses); in a case of your "
-            "own, leave it out of Allrun.post and use adhesiveWallPost "
-            "gradeEfficiency or sizeClasses") from None
+    except (RuntimeError, ValueError, OSError) as err:
+        raise stop("tubeDiffusion", err, "the tubeDiffusion tutorial's "
+                   "case (its tube, its fixed-size injectors, diffusion "
+                   "alone, no sizeClasses)") from None
     tables.write_csv("results.csv", RESULT_COLUMNS, rows)
     results = tables.read("results.csv")
     lines = headline(results, tube, forces, deviation)
