@@ -83,6 +83,8 @@ TEST(Plausibility, DensityDiameterAndSurfaceEnergy)
     // (v1912's reactingHeterogenousParcelFoam tutorial: 11 mm); sub-micron
     // sizes typed in um are not (0.1 um typed 0.1: 10 cm; 0.02 um: 2 cm)
     EXPECT_EQ(stops(magnitude::diameter, "d", 0.011), "");
+    EXPECT_EQ(stops(magnitude::diameter, "d", 0.015), "");
+    EXPECT_NE(stops(magnitude::diameter, "d", 0.0151), "");
     EXPECT_TRUE(has(stops(magnitude::diameter, "d", 0.1), "1e-07 (0.1 um)"));
     EXPECT_NE(stops(magnitude::diameter, "d", 0.02), "");
     EXPECT_NE(stops(magnitude::diameter, "d", 0.5), "");

@@ -104,7 +104,8 @@ void Foam::AdhesiveWallInteraction<CloudType>::checkSurfaceContactPlace() const
             checkedInput::fail
             (
                 functions->dict(), function.keyword(),
-                "{ type adhesiveWallSurfaceContact; ... }",
+                "{ type " + wallInteractionCloud::surfaceContactType
+              + "; ... }",
                 "a cloud function in subModels, where OpenFOAM does not read"
                 " cloudFunctions: move the cloudFunctions block to the top"
                 " level of the cloud's properties"
