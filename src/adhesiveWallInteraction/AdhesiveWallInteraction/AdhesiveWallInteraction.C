@@ -814,6 +814,13 @@ void Foam::AdhesiveWallInteraction<CloudType>::resuspend()
 
     sites_->update(this->owner().U(), this->owner().rho(), this->owner().mu());
 
+    // Per patch: the deposits tested and the range of their friction
+    // velocities, for the log (a user judges the rates by u*)
+    const label nPatches = compat::boundaryMesh(mesh).size();
+    labelList tested(nPatches, 0);
+    scalarList uStarMin(nPatches, std::numeric_limits<scalar>::max());
+    scalarList uStarMax(nPatches, scalar(0));
+
     for (auto& p : this->owner())
     {
         if
@@ -833,6 +840,10 @@ void Foam::AdhesiveWallInteraction<CloudType>::resuspend()
         const resuspensionSettings& settings =
             *coeffs_.entries().entryOf(s->patchi)->resuspension();
         const depositSites::flow& flow = sites_->flowAt(*s);
+        const scalar uStar = Foam::sqrt(flow.tauW/flow.rho);
+        ++tested[s->patchi];
+        uStarMin[s->patchi] = min(uStarMin[s->patchi], uStar);
+        uStarMax[s->patchi] = max(uStarMax[s->patchi], uStar);
         const std::uint64_t key1 = std::uint64_t(p.origProc()) | stream;
         const std::uint64_t key2 = std::uint64_t(p.origId());
         const scalar r = 0.5*p.d();
@@ -871,10 +882,47 @@ void Foam::AdhesiveWallInteraction<CloudType>::resuspend()
             );
         if (leaves)
         {
-            release(p, position, *s, Foam::sqrt(flow.tauW/flow.rho));
+            release(p, position, *s, uStar);
         }
     }
     capturedThisStep_.clear();
+
+    forAll(tested, patchi)
+    {
+        const wallInteractionEntry* entry = coeffs_.entries().entryOf(patchi);
+        if (!entry || !entry->resuspension())
+        {
+            continue;
+        }
+        const label n = returnReduce(tested[patchi], sumOp<label>());
+        if (!n)
+        {
+            continue;
+        }
+        const word& patch = compat::boundaryMesh(mesh)[patchi].name();
+        Info<< "    resuspension " << patch.c_str() << ": " << n
+            << " deposits tested, friction velocity u* "
+            << returnReduce(uStarMin[patchi], minOp<scalar>()) << " to "
+            << returnReduce(uStarMax[patchi], maxOp<scalar>()) << " m/s"
+            << endl;
+        if
+        (
+            !laminarSaid_ && !sites_->turbulent()
+         && entry->resuspension()->model.kind
+            == brachDunn::DepositResuspension::Kind::rockNRoll
+        )
+        {
+            // (the channelResuspension tutorial does this on purpose: a
+            // laminar Couette flow of a turbulent channel's wall stress)
+            Info<< "    rockNRoll on " << patch.c_str() << ": the flow has no"
+                << " turbulence model (no nut), so u* is that of the laminar"
+                << " wall shear stress, taken as a turbulent boundary"
+                << " layer's (bursts of frequency frequencyPlus u*^2/nu and"
+                << " the fluctuating moment are those of turbulent flow)"
+                << endl;
+            laminarSaid_ = true;
+        }
+    }
 }
 
 

@@ -71,6 +71,7 @@ void Foam::depositSites::update
     const volScalarField* nut =
         mesh_.foundObject<volScalarField>("nut")
       ? &mesh_.lookupObject<volScalarField>("nut") : nullptr;
+    turbulent_ = nut;
 
     forAll(resuspends_, patchi)
     {
