@@ -187,3 +187,16 @@ def test_numbers_in_their_shortest_exact_form():
     assert statistics._text(float("nan")) == "nan"
     assert statistics._text(float("inf")) == "inf"
     assert float(statistics._text(0.1 + 0.2)) == 0.1 + 0.2
+
+
+def test_grade_efficiency_plot_of_one_open_class_warns_of_nothing(tmp_path):
+    # Without sizeClasses the only class is [0, inf): drawn at no size, and
+    # no numpy warning on the way (0 * inf)
+    import warnings
+    from adhesivewall import tables
+    classes = tables.Table(["dMin", "dMax", "capturedFraction"],
+                           [("0", "inf", "0.5"), ("1e-06", "2e-06", "0.25")])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        statistics.plot_grade_efficiency(tmp_path / "g.png", classes)
+    assert (tmp_path / "g.png").stat().st_size > 0

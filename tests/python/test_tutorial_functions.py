@@ -123,3 +123,40 @@ def test_settling_channel_takes_the_slip_of_the_cloud_drag(tmp_path):
         drag("slipSphereDrag;")
     with pytest.raises(ValueError, match="neither meanFreePath nor p and T"):
         drag("slipSphereDrag { p 101325; }")
+
+
+def test_fibre_filter_headline_flags_what_its_correlations_cannot_judge():
+    # A face velocity of fibre Reynolds number 33 (50 typed for 0.5 m/s) is
+    # beyond the creeping-flow correlations; a lowest efficiency at the
+    # edge of the sizes run is no most penetrating size
+    from types import SimpleNamespace
+    from adhesivewall.tutorials import fibre_filter
+    names = ["U0", "d", "model", "eta", "etaSE", "Stk", "R", "Pe", "Re_f",
+             "etaD", "etaR", "etaDR", "etaI", "etaSum", "airborne"]
+    rows = []
+    for U, reynolds in (("0.5", "0.33"), ("50", "33")):
+        for d, eta in (("3e-07", "0.004"), ("1e-06", "0.03")):
+            for model in ("stick", "adhesive"):
+                rows.append((U, d, model, eta, "0.001", "0.03", "0.03",
+                             "4e4", reynolds, "0.003", "0.001", "0.001",
+                             "", "", "0"))
+    results = tables.Table(names, rows)
+    mpps = tables.Table(
+        ["U0", "d", "eta", "etaSE", "model", "dLeeLiu", "etaLeeLiu"],
+        [("0.5", "3e-07", "0.004", "0.001", "stick", "2e-07", "0.005")])
+    fibre = SimpleNamespace(dFibre=10e-6, alpha=0.08, T=293.15)
+    text = "\n".join(fibre_filter.headline(results, mpps, fibre))
+    assert "fibre Reynolds number 33 at 50 m/s: beyond the creeping" in text
+    assert "at 0.5 m/s: the" not in text
+    assert ("most penetrating size at 0.5 m/s (stick): not among the sizes "
+            "run (the lowest efficiency is at the smallest, 0.3 um)") in text
+    # Inside the sizes run it is reported with Lee & Liu's ratios
+    mpps = tables.Table(mpps.names, [("0.5", "1e-06", "0.03", "0.001",
+                                      "stick", "2e-07", "0.005")])
+    rows.append(("0.5", "3e-06", "stick", "0.5", "0.01", "2", "0.3", "1e6",
+                 "0.33", "0.001", "0.1", "0.001", "", "", "0"))
+    rows.append(("0.5", "3e-06", "adhesive", "0.4", "0.01", "2", "0.3",
+                 "1e6", "0.33", "0.001", "0.1", "0.001", "", "", "0"))
+    text = "\n".join(fibre_filter.headline(tables.Table(names, rows), mpps,
+                                           fibre))
+    assert "most penetrating size at 0.5 m/s (stick): 1 um, eta 0.03" in text

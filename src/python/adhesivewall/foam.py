@@ -263,17 +263,29 @@ def parcel_count(case=".", time=None, cloud="kinematicCloud"):
     return 0
 
 
+class NotFixedSizes(ValueError):
+    """A cloud whose injectors are not each of one fixed size."""
+
+
 def fixed_size_injectors(case=".",
                          properties="constant/kinematicCloudProperties"):
     """The injection models of a cloud's properties, each of one diameter
     (a fixedValue size distribution), as (name, injectorID, d,
     positionsFile) in the dictionary's order."""
     models = dictionary(properties, "subModels/injectionModels", case=case)
-    return [(name, int(entry["injectorID"]),
-             float(entry["sizeDistribution"]["fixedValueDistribution"]
-                   ["value"]),
-             str(entry["positionsFile"]))
-            for name, entry in models.items()]
+    found = []
+    for name, entry in models.items():
+        try:
+            found.append((name, int(entry["injectorID"]),
+                          float(entry["sizeDistribution"]
+                                ["fixedValueDistribution"]["value"]),
+                          str(entry["positionsFile"])))
+        except (KeyError, TypeError):
+            raise NotFixedSizes(
+                f"{properties}: injector {name} is not a manualInjection of "
+                "one fixed size with an injectorID (sizeDistribution "
+                "fixedValue, injectorID, positionsFile)") from None
+    return found
 
 
 def written_header(tutorial, foam_class, name, comment):

@@ -184,7 +184,9 @@ def plot_grade_efficiency(path, classes, title=""):
     lo = classes["dMin"]
     hi = classes["dMax"]
     closed = (lo > 0) & np.isfinite(hi)
-    mid = np.where(closed, np.sqrt(np.where(closed, lo * hi, 1)),
+    # (the product only of closed classes: 0 * inf would warn)
+    mid = np.where(closed, np.sqrt(np.where(closed, lo, 1)
+                                   * np.where(closed, hi, 1)),
                    np.where(lo > 0, lo, hi))
     eta = classes["capturedFraction"]
     shown = np.isfinite(eta) & (mid > 0)

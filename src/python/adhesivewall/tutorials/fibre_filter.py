@@ -36,6 +36,7 @@ import math
 import os
 
 from .. import correlations, curves, foam, statistics, tables
+from . import stop
 
 CLOUDS = ("stick", "adhesive")
 ANGLE_CASES = (("0.1", "2e-6"), ("2", "2e-6"), ("2", "5e-6"), ("2", "10e-6"))
@@ -387,9 +388,23 @@ def headline(results, mpps, fibre):
                           cell("etaD"), cell("etaR"), cell("etaDR"),
                           cell("etaI"), cell("etaSum"))).rstrip())
     lines += ["", "(eta_I, sum: '-' where R >= 0.4, beyond the impaction fit)"]
+    for U in results.unique("U0"):
+        reynolds = results.where(U0=U)["Re_f"][0]
+        if reynolds > 1:
+            lines.append("fibre Reynolds number %.3g at %s m/s: beyond the "
+                         "creeping (Kuwabara) flow of the correlations "
+                         "(Re_f << 1), estimates only there" % (reynolds, U))
     for U, d, eta, se, model, dLL, etaLL in zip(
             mpps.text("U0"), mpps["d"], mpps["eta"], mpps["etaSE"],
             mpps.text("model"), mpps["dLeeLiu"], mpps["etaLeeLiu"]):
+        sizes = results.where(U0=U, model=model)["d"]
+        if d in (sizes.min(), sizes.max()):
+            lines.append("most penetrating size at %s m/s (%s): not among "
+                         "the sizes run (the lowest efficiency is at the %s, "
+                         "%.3g um); Lee & Liu (1980): %.3g um" % (
+                             U, model, "smallest" if d == sizes.min()
+                             else "largest", d * 1e6, dLL * 1e6))
+            continue
         lines.append("most penetrating size at %s m/s (%s): %.3g um, eta %.3g "
                      "+- %.2g; Lee & Liu (1980): %.3g um, %.3g (ratios %.2f, "
                      "%.2f)" % (U, model, d * 1e6, eta, se, dLL * 1e6, etaLL,
@@ -498,18 +513,23 @@ def plot_angles(path, angles):
 
 
 def run(case="."):
-    os.chdir(case)
-    fibre = Filter()
-    subs = sub_cases()
-    for folder, _ in subs:
-        for cloud in CLOUDS:
-            for name in ("statistics.dat", "impacts.csv"):
-                path = os.path.join(statistics.output_folder(folder, cloud),
-                                    name)
-                if not os.path.isfile(path):
-                    raise FileNotFoundError(
-                        f"no {name} of the cloud {cloud} in {folder}")
-    tables.write_csv("results.csv", RESULT_COLUMNS, result_rows(fibre, subs))
+    try:
+        os.chdir(case)
+        fibre = Filter()
+        subs = sub_cases()
+        for folder, _ in subs:
+            for cloud in CLOUDS:
+                for name in ("statistics.dat", "impacts.csv"):
+                    path = os.path.join(
+                        statistics.output_folder(folder, cloud), name)
+                    if not os.path.isfile(path):
+                        raise FileNotFoundError(
+                            f"no {name} of the cloud {cloud} in {folder}")
+        rows = result_rows(fibre, subs)
+    except (RuntimeError, ValueError, OSError) as err:
+        raise stop("fibreFilter", err, "the fibreFilter tutorial's sub-cases "
+                   "(one fixed size per injector)") from None
+    tables.write_csv("results.csv", RESULT_COLUMNS, rows)
     results = tables.read("results.csv")
     tables.write_csv("mpps.csv", MPPS_COLUMNS, mpps_rows(results, fibre))
     mpps = tables.read("mpps.csv")
