@@ -132,20 +132,26 @@ def test_fibre_filter_headline_flags_what_its_correlations_cannot_judge():
     from types import SimpleNamespace
     from adhesivewall.tutorials import fibre_filter
     names = ["U0", "d", "model", "eta", "etaSE", "Stk", "R", "Pe", "Re_f",
-             "etaD", "etaR", "etaDR", "etaI", "etaSum", "airborne"]
+             "etaD", "etaR", "etaDR", "etaI", "etaSum", "airborne", "band",
+             "outer", "captured"]
     rows = []
     for U, reynolds in (("0.5", "0.33"), ("50", "33")):
         for d, eta in (("3e-07", "0.004"), ("1e-06", "0.03")):
             for model in ("stick", "adhesive"):
                 rows.append((U, d, model, eta, "0.001", "0.03", "0.03",
                              "4e4", reynolds, "0.003", "0.001", "0.001",
-                             "", "", "0"))
+                             "", "0.005", "0", "1e-05", "1", "40"))
+    # a band with 6 of its 40 captures in its outer half (max(2, 10 %): 4)
+    rows[0] = rows[0][:-2] + ("6", "40")
     results = tables.Table(names, rows)
     mpps = tables.Table(
         ["U0", "d", "eta", "etaSE", "model", "dLeeLiu", "etaLeeLiu"],
         [("0.5", "3e-07", "0.004", "0.001", "stick", "2e-07", "0.005")])
-    fibre = SimpleNamespace(dFibre=10e-6, alpha=0.08, T=293.15)
+    fibre = SimpleNamespace(dFibre=10e-6, alpha=0.08, T=293.15, h=31.3e-6)
     text = "\n".join(fibre_filter.headline(results, mpps, fibre))
+    assert ("stick, 0.3 um at 0.5 m/s: 6 of 40 captures in the outer half "
+            "of the band") in text
+    assert text.count("captures in the outer half") == 1
     assert "fibre Reynolds number 33 at 50 m/s: beyond the creeping" in text
     assert "at 0.5 m/s: the" not in text
     assert ("most penetrating size at 0.5 m/s (stick): not among the sizes "
@@ -154,9 +160,11 @@ def test_fibre_filter_headline_flags_what_its_correlations_cannot_judge():
     mpps = tables.Table(mpps.names, [("0.5", "1e-06", "0.03", "0.001",
                                       "stick", "2e-07", "0.005")])
     rows.append(("0.5", "3e-06", "stick", "0.5", "0.01", "2", "0.3", "1e6",
-                 "0.33", "0.001", "0.1", "0.001", "", "", "0"))
+                 "0.33", "0.001", "0.1", "0.001", "", "", "0", "1e-05", "",
+                 "100"))
     rows.append(("0.5", "3e-06", "adhesive", "0.4", "0.01", "2", "0.3",
-                 "1e6", "0.33", "0.001", "0.1", "0.001", "", "", "0"))
+                 "1e6", "0.33", "0.001", "0.1", "0.001", "", "", "0", "1e-05",
+                 "", "80"))
     text = "\n".join(fibre_filter.headline(tables.Table(names, rows), mpps,
                                            fibre))
     assert "most penetrating size at 0.5 m/s (stick): 1 um, eta 0.03" in text

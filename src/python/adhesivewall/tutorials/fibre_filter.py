@@ -388,6 +388,21 @@ def headline(results, mpps, fibre):
                           cell("etaD"), cell("etaR"), cell("etaDR"),
                           cell("etaI"), cell("etaSum"))).rstrip())
     lines += ["", "(eta_I, sum: '-' where R >= 0.4, beyond the impaction fit)"]
+    # A band that may cut off captures (the tutorial's test: at most
+    # max(2, 10 %) of them in its outer half, where the band is not the
+    # whole period and the correlations hold)
+    for k in range(len(results)):
+        def cell(name, k=k):
+            return results.text(name)[k]
+        if cell("outer") and cell("etaSum") \
+                and float(cell("band")) < fibre.h / 2 * (1 - 1e-4):
+            outer, captured = int(cell("outer")), int(cell("captured"))
+            if outer > max(2, 0.1 * captured):
+                lines.append(
+                    "%s, %s um at %s m/s: %d of %d captures in the outer half "
+                    "of the band: it may cut off captures (widen it)" % (
+                        cell("model"), "%.3g" % (float(cell("d")) * 1e6),
+                        cell("U0"), outer, captured))
     for U in results.unique("U0"):
         reynolds = results.where(U0=U)["Re_f"][0]
         if reynolds > 1:
