@@ -330,9 +330,11 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::postMove
         compat::moveBackTo
         (
             p,
+            *positions_,
             centre - end,
             centre,
-            (1 - contact->fraction)*dt/this->owner().solution().trackTime()
+            (1 - contact->fraction)*dt/this->owner().solution().trackTime(),
+            debug != 0
         );
     }
 

@@ -316,36 +316,6 @@ Foam::wallTriangles::wallTriangles
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::wallTriangles::apart
-(
-    const label celli,
-    const point& p,
-    const scalar distance
-) const
-{
-    const brachDunn::Vector3 a(toCore(p));
-    for (int k = cellPlaneStart_[celli]; k < cellPlaneStart_[celli + 1]; ++k)
-    {
-        // The plane first: it decides for most points near a flat wall
-        const plane& q = planes_[k];
-        if (q.flat && std::abs(dot(q.normal, a) - q.offset) > distance)
-        {
-            continue;
-        }
-        if
-        (
-            a.x >= q.lower.x - distance && a.x <= q.upper.x + distance
-         && a.y >= q.lower.y - distance && a.y <= q.upper.y + distance
-         && a.z >= q.lower.z - distance && a.z <= q.upper.z + distance
-        )
-        {
-            return false;
-        }
-    }
-    return true;
-}
-
-
 std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact
 (
     const label celli,
