@@ -693,12 +693,16 @@ def test_mass_transferred(tmp_path):
 
 def test_bench_lines(tmp_path):
     # Ratios 1.0, 1.3, 1.1: median 1.1, mean 3.4/3, deviation
-    # sqrt((0.1333^2 + 0.1667^2 + 0.0333^2)/2) = sqrt(0.07/3)
-    line = checks.time_ratios_line("x", [2, 2, 10], [2, 2.6, 11])
-    assert line == ("x: time ratio median 1.100, mean 1.133 +- 0.153 "
-                    "(3 alternating pairs: 1.0000 1.3000 1.1000)")
+    # sqrt((0.1333^2 + 0.1667^2 + 0.0333^2)/2) = sqrt(0.07/3); fastest
+    # runs 2.4/2 = 1.2 (the fastest of each side, from different pairs)
+    line = checks.time_ratios_line("x", [2.4, 2, 10], [2.4, 2.6, 11])
+    assert line == ("x: time ratio median 1.100, mean 1.133 +- 0.153, "
+                    "fastest runs 1.200 (3 alternating pairs: 1.0000 1.3000 "
+                    "1.1000)")
     with pytest.raises(CheckError):
         checks.time_ratios_line("x", [1], [1, 2])
+    with pytest.raises(CheckError):
+        checks.time_ratios_line("x", [1, 1], [1, 0])
     assert checks.solver_lines(20000, 2500000, 10) == [
         "solver: 20000 parcels, 50 steps: 2500000 wall impacts, 50000 per "
         "step; adhesive run 10 s",
