@@ -357,6 +357,11 @@ def test_lagrangian_fields(tmp_path):
     n.write_text(HEADER % ("vectorField", "U") + "0()\n")
     with pytest.raises(CheckError, match="no parcels"):
         checks.last_vector(n)
+    # A positions file of the v1706 form: '(x y z) cell' a parcel
+    positions = tmp_path / "positions"
+    positions.write_text(HEADER % ("Cloud<passiveParticle>", "positions")
+                         + "2\n(\n(1 2 3) 4\n(5e-4 6 7) 10\n)\n")
+    assert checks.last_vector(positions) == [5e-4, 6, 7]
 
 
 def test_compare_vectors():

@@ -515,9 +515,12 @@ Foam::vector Foam::AdhesiveWallInteraction<CloudType>::wallVelocity
 template<class CloudType>
 Foam::labelList Foam::AdhesiveWallInteraction<CloudType>::wallPatches() const
 {
+    // Not constraint patches taken on with patchType: a symmetry plane or
+    // a wedge is a mirror of the flow, which a parcel's centre meets
     using interaction = wallInteractionEntry::interaction;
+    const polyBoundaryMesh& boundary = compat::boundaryMesh(this->owner().mesh());
     DynamicList<label> patches;
-    forAll(compat::boundaryMesh(this->owner().mesh()), patchi)
+    forAll(boundary, patchi)
     {
         const wallInteractionEntry* entry = coeffs_.entries().entryOf(patchi);
         if
@@ -525,6 +528,7 @@ Foam::labelList Foam::AdhesiveWallInteraction<CloudType>::wallPatches() const
             entry
          && entry->type() != interaction::escape
          && entry->type() != interaction::none
+         && !compat::isConstraint(boundary[patchi])
         )
         {
             patches.append(patchi);

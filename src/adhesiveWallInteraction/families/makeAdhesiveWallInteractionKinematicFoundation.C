@@ -3,5 +3,9 @@
 // Foundation's kinematic family)
 #include "momentumCloud.H"
 #include "AdhesiveWallInteraction.H"
+#include "AdhesiveWallSurfaceContactRefused.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, momentumCloud);
+// Contact at the surface is not written for the Foundation's tracking:
+// selected, it stops saying so
+makeCloudFunctionObjectType(AdhesiveWallSurfaceContactRefused, momentumCloud);

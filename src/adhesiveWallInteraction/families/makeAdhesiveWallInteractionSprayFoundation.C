@@ -2,5 +2,9 @@
 // adhesiveWallInteraction for the clouds of type sprayCloud
 #include "sprayCloud.H"
 #include "AdhesiveWallInteraction.H"
+#include "AdhesiveWallSurfaceContactRefused.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, sprayCloud);
+// Contact at the surface is not written for the Foundation's tracking:
+// selected, it stops saying so
+makeCloudFunctionObjectType(AdhesiveWallSurfaceContactRefused, sprayCloud);

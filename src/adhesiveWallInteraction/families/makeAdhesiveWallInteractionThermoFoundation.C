@@ -2,5 +2,9 @@
 // adhesiveWallInteraction for the clouds of type thermoCloud
 #include "thermoCloud.H"
 #include "AdhesiveWallInteraction.H"
+#include "AdhesiveWallSurfaceContactRefused.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, thermoCloud);
+// Contact at the surface is not written for the Foundation's tracking:
+// selected, it stops saying so
+makeCloudFunctionObjectType(AdhesiveWallSurfaceContactRefused, thermoCloud);

@@ -4,6 +4,8 @@
 #include "checkedInput.H"
 #include "meshTools.H"
 
+#include <limits>
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
@@ -189,12 +191,17 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::takeMotionVelocity
     // the wall within the sub-step, or which holds the next step's draw of
     // exactBrownianMotion (in the sub-step that completes a time step).
     // The displacement gives the start's velocity to the rounding of the
-    // positions (of order 1e-10 of it from a displacement of 1e-6 of the
-    // coordinates on): a shorter one, and a velocity that equals the end's
-    // to 1e-9 (no force acted), keep the end's, exact.
+    // positions, some eps |coordinates| / |displacement| of it: wherever
+    // that is below 1e-3 it is taken (relative to the coordinates, so that
+    // where the mesh's origin is does not matter). A velocity that equals
+    // the end's to that rounding (at least 1e-9: no force acted) keeps the
+    // end's, exact.
     const vector moved = end - position0;
-    const scalar coordinates = cmptSum(cmptMag(position0));
-    if (!(dt > 0 && cmptSum(cmptMag(moved)) > 1e-6*coordinates))
+    const scalar rounding =
+        8*std::numeric_limits<scalar>::epsilon()
+       *(cmptSum(cmptMag(position0)) + cmptSum(cmptMag(end)))
+       /max(cmptSum(cmptMag(moved)), VSMALL);
+    if (!(dt > 0 && rounding < 1e-3))
     {
         return;
     }
@@ -210,10 +217,22 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::takeMotionVelocity
             U[d] = p.U()[d];
         }
     }
-    if (magSqr(U - p.U()) > 1e-18*magSqr(U))
+    if (magSqr(U - p.U()) > sqr(max(1e-9, rounding))*magSqr(U))
     {
         p.U() = U;
     }
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::AdhesiveWallSurfaceContact<CloudType>::movedOver() const
+{
+    // v1912's clouds move their parcels over the time's step (a transient
+    // cloud's trackTime), and a colliding cloud's collision sub-cycles over
+    // the sub-cycle's step, to which the time is set meanwhile
+    // (CollidingCloud::motion): a sub-step's dt is that step's part.
+    // Steady clouds are refused by the model (wallInteractionCloud::check)
+    return this->owner().db().time().deltaTValue();
 }
 
 
@@ -245,7 +264,7 @@ Foam::AdhesiveWallSurfaceContact<CloudType>::AdhesiveWallSurfaceContact
     const word& modelName
 )
 :
-    CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
+    compat::CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
     maxDiameter_(readMaxDiameter(this->coeffDict()))
 {}
 
@@ -256,7 +275,7 @@ Foam::AdhesiveWallSurfaceContact<CloudType>::AdhesiveWallSurfaceContact
     const AdhesiveWallSurfaceContact<CloudType>& other
 )
 :
-    CloudFunctionObject<CloudType>(other),
+    compat::CloudFunctionObject<CloudType>(other),
     maxDiameter_(other.maxDiameter_),
     walls_(other.walls_),
     model_(other.model_),
@@ -268,14 +287,14 @@ Foam::AdhesiveWallSurfaceContact<CloudType>::AdhesiveWallSurfaceContact
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::AdhesiveWallSurfaceContact<CloudType>::preEvolve()
+void Foam::AdhesiveWallSurfaceContact<CloudType>::beforeEvolve()
 {
     setUp();
 }
 
 
 template<class CloudType>
-void Foam::AdhesiveWallSurfaceContact<CloudType>::postMove
+void Foam::AdhesiveWallSurfaceContact<CloudType>::afterMove
 (
     typename CloudType::parcelType& p,
     const scalar dt,
@@ -333,7 +352,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::postMove
             *positions_,
             centre - end,
             centre,
-            (1 - contact->fraction)*dt/this->owner().solution().trackTime(),
+            (1 - contact->fraction)*dt/movedOver(),
             debug != 0
         );
     }

@@ -546,8 +546,11 @@ def lagrangian_values(path):
 
 def last_vector(path):
     """The last vector of a lagrangian vector field file (a parcel's
-    velocity, angular momentum); a CheckError when it holds none."""
+    velocity, angular momentum) or of a positions file (the v1706 form,
+    '(x y z) cell' a parcel); a CheckError when it holds none."""
     items = foam.list_file(path)
+    if os.path.basename(path) == "positions":
+        items = [item for item in items if isinstance(item, list)]
     if not items:
         raise CheckError(f"{path}: no parcels")
     last = items[-1]
