@@ -292,7 +292,8 @@ LogNormalAdhesion biasiAdhesion(double r)
         throw InputError
         (
             "r", toText(r),
-            "must be < 3.5e-5 m: Biasi's geometric mean is <= 0 beyond"
+            "must be below 3.513e-5 m (a diameter of 70.26 um), where Biasi's"
+            " fitted geometric mean reaches zero"
         );
     }
     return fit;

@@ -388,23 +388,20 @@ std::optional<Contact> firstContact
     // wall it slides along or leaves), and those it reaches through them:
     // a contact at a point of one of these is no first contact with the
     // wall (the next triangle of the same plane, touched at the edge they
-    // share). Rarely more than a few; beyond the capacity they are not held.
-    constexpr int capacity = 64;
-    int overlapped[capacity];
-    int nOverlapped = 0;
+    // share). Rarely more than a few, all of them held (the list is kept
+    // between calls: no allocation once it has grown).
+    static thread_local std::vector<int> overlapped;
+    overlapped.clear();
     const auto overlap = [&](int index)
     {
-        if (nOverlapped < capacity)
-        {
-            overlapped[nOverlapped++] = index;
-        }
+        overlapped.push_back(index);
     };
     const auto onOverlapped = [&](const Vector3& point)
     {
         const double tolSqr = 1e-12*r*r;
-        for (int k = 0; k < nOverlapped; ++k)
+        for (const int index : overlapped)
         {
-            const Face& f = triangles[overlapped[k]];
+            const Face& f = triangles[index];
             if (magSqr(point - closestPoint(f, point)) <= tolSqr)
             {
                 return true;

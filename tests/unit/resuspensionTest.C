@@ -311,6 +311,14 @@ TEST(Resuspension, BiasiFit)
     EXPECT_NEAR(biasiAdhesion(10e-6).geometricMean, 0.0079327, 1e-7);
     EXPECT_NEAR(biasiAdhesion(10e-6).geometricSpread, 5.2162, 1e-4);
     EXPECT_TRUE(throwsInputError([] { biasiAdhesion(36e-6); }, "r", "3.6e-05"));
+    // The fit ends where its geometric mean reaches zero:
+    // r = (0.016/0.0023)^(1/0.545) um = 35.1296 um (worked by hand), the
+    // radius the README and the message give
+    EXPECT_GT(biasiAdhesion(35.12e-6).geometricMean, 0);
+    EXPECT_TRUE
+    (
+        throwsInputError([] { biasiAdhesion(35.14e-6); }, "r", "3.514e-05")
+    );
 }
 
 

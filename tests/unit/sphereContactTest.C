@@ -1099,6 +1099,52 @@ TEST(SphereContact, LeavingWallsOnTheCallersVerdict)
 }
 
 
+TEST(SphereContact, AsManyOverlappedWallsAsThereAre)
+{
+    // The geometry of LeavingWallsOnTheCallersVerdict, with 100 small
+    // triangles of the floor's plane along the path handed as leaving
+    // before the floor's own two: however many walls the sphere overlaps,
+    // the slope met at the floor's edge is still a point of one of them,
+    // and there is no contact (the same answer as with the floor alone).
+    // A search that held only the first 64 overlapped walls lost the
+    // floor's and touched the slope at the edge
+    const double r = 0.1, delta = 1e-7*r;
+    std::vector<Triangle> walls
+    {
+        {{0, 0, 0}, {1, 0, delta}, {1, 1, delta}},
+        {{0, 0, 0}, {1, 1, delta}, {0, 1, 0}},
+        {{1, 0, delta}, {2, 0, delta - 1}, {2, 1, delta - 1}},
+        {{1, 0, delta}, {2, 1, delta - 1}, {1, 1, delta}}
+    };
+    std::vector<int> leaving;
+    for (int i = 0; i < 100; ++i)
+    {
+        const double x = 0.5 + 0.005*i;
+        walls.push_back({{x, 0.45, 0}, {x + 0.004, 0.45, 0}, {x, 0.55, 0}});
+        leaving.push_back(int(walls.size()) - 1);
+    }
+    leaving.push_back(0);
+    leaving.push_back(1);
+    for (const Frame& frame : frames)
+    {
+        std::vector<PreparedTriangle> prepared;
+        for (const Triangle& t : walls)
+        {
+            prepared.push_back(prepare(frame(t)));
+        }
+        const int slope[] = {2, 3};
+        const Vector3 A = frame({0.5, 0.5, r}), B = frame({1.2, 0.5, r});
+        const auto c = firstContact
+        (
+            prepared, slope, slope + 2, A, B, r,
+            leaving.data(), leaving.data() + leaving.size()
+        );
+        EXPECT_FALSE(c) << frame.identity << ": contact at "
+            << (c ? c->fraction : -1) << " with " << (c ? c->triangle : -1);
+    }
+}
+
+
 TEST(SphereContact, InputChecks)
 {
     const Triangle t{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};

@@ -5,6 +5,8 @@
 #include "wallPolyPatch.H"
 #include "CounterRandom.H"
 
+#include <cstring>
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
@@ -810,11 +812,18 @@ void Foam::AdhesiveWallInteraction<CloudType>::resuspend()
     const fvMesh& mesh = this->owner().mesh();
     const Time& time = mesh.time();
     const scalar dt = time.deltaTValue();
-    // The per-step draws: counter = time index (>= 1); the adhesion's: 0.
-    // The key's high bits set apart these streams from other users of
-    // (seed, origProc, origId) (exactBrownianMotion)
+    // The per-step draws: counter = the bits of the step's time (a
+    // continuation that restarts the time index, from a time folder
+    // without uniform/time, would repeat the index's draws; a case never
+    // repeats a time), the sign bit flipped so that t = 0 is not the
+    // adhesion's counter, 0. The key's high bits set apart these streams
+    // from other users of (seed, origProc, origId) (exactBrownianMotion)
     constexpr std::uint64_t stream = std::uint64_t(1) << 62;
-    const std::uint64_t step = time.timeIndex();
+    const double stepTime = time.value();
+    std::uint64_t step = 0;
+    static_assert(sizeof step == sizeof stepTime);
+    std::memcpy(&step, &stepTime, sizeof step);
+    step ^= std::uint64_t(1) << 63;
 
     sites_->update(this->owner().U(), this->owner().rho(), this->owner().mu());
 

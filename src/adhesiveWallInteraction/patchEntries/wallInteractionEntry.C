@@ -414,6 +414,12 @@ Foam::string Foam::wallInteractionEntry::describe() const
     {
         os  << "; resuspension " << resuspension_->model.describe()
             << " seed " << resuspension_->seed;
+        const std::vector<std::string>& defaulted = resuspension_->defaulted;
+        for (std::size_t i = 0; i < defaulted.size(); ++i)
+        {
+            os  << (i ? ", " : " (by default: ") << defaulted[i].c_str()
+                << (i + 1 == defaulted.size() ? ")" : "");
+        }
     }
     return os.str();
 }

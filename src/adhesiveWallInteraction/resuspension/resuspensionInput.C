@@ -71,6 +71,18 @@ std::optional<Foam::resuspensionSettings> Foam::readResuspension
         );
     }
     magnitudes.check(sub, "w", model.w, brachDunn::magnitude::surfaceEnergy);
+    for (const word& keyword : known)
+    {
+        if
+        (
+            (keyword == "adhesionSpread" || keyword == "seed"
+          || keyword == "rmsRatio" || keyword == "frequencyPlus")
+         && !checkedInput::find(sub, keyword)
+        )
+        {
+            settings.defaulted.push_back(keyword);
+        }
+    }
     settings.seed = checkedInput::readCount(sub, "seed", 1);
     model.rmsRatio =
         checkedInput::readNumber(sub, "rmsRatio", model.rmsRatio);

@@ -3,6 +3,7 @@
 #include "AdhesiveWallSurfaceContact.H"
 #include "checkedInput.H"
 #include "meshTools.H"
+#include "wallPolyPatch.H"
 
 #include <limits>
 
@@ -287,9 +288,45 @@ Foam::AdhesiveWallSurfaceContact<CloudType>::AdhesiveWallSurfaceContact
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
+void Foam::AdhesiveWallSurfaceContact<CloudType>::checkMovingWalls() const
+{
+    // A wall face held here for another processor has no velocity here:
+    // its contacts would take the wall as still (the result would depend
+    // on the decomposition). Moving walls (a lid, a belt: the tangential
+    // velocity their U condition sets) are refused in parallel runs
+    if (!Pstream::parRun() || !returnReduce(walls_->nRemote(), sumOp<label>()))
+    {
+        return;
+    }
+    const polyBoundaryMesh& patches = compat::boundaryMesh(this->owner().mesh());
+    for (const label patchi : model_->wallPatches())
+    {
+        const fvPatchVectorField& Uw = this->owner().U().boundaryField()[patchi];
+        const scalar speed =
+            isA<wallPolyPatch>(patches[patchi]) && Uw.fixesValue() && Uw.size()
+          ? max(mag(Uw)) : 0;
+        if (returnReduce(speed, maxOp<scalar>()) > 0)
+        {
+            FatalErrorInFunction
+                << "Cloud function " << this->modelName() << " of cloud "
+                << this->owner().name() << ": wall patch "
+                << patches[patchi].name() << " moves (its U condition sets "
+                << "up to " << returnReduce(speed, maxOp<scalar>())
+                << " m/s) in a parallel run, and contact at the surface"
+                << " takes the faces it holds for a neighbouring processor as"
+                << " still. Run this case in serial, or without "
+                << this->modelName() << " (contact at the centre)"
+                << exit(FatalError);
+        }
+    }
+}
+
+
+template<class CloudType>
 void Foam::AdhesiveWallSurfaceContact<CloudType>::beforeEvolve()
 {
     setUp();
+    checkMovingWalls();
 }
 
 

@@ -124,6 +124,17 @@ Foam::aerosolForces::readMeanFreePath(const dictionary& dict)
             "and molarMass, from which the mean free path follows)"
         );
     }
+    if (given && checkedInput::find(dict, "molarMass"))
+    {
+        checkedInput::fail
+        (
+            dict, "molarMass",
+            checkedInput::entryText(*checkedInput::find(dict, "molarMass")),
+            "is given with meanFreePath, which it would not change: the molar"
+            " mass only serves to compute the mean free path from p and T."
+            " Remove one"
+        );
+    }
     if (given)
     {
         source.given = readGasValue
