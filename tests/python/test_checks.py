@@ -327,6 +327,18 @@ def test_boundary_sum(tmp_path):
         checks.boundary_sum(field)
 
 
+def test_boundary_min(tmp_path):
+    field = tmp_path / "massStick"
+    field.write_text(MASS_STICK.replace("3(1e-14 0 2.5e-14)",
+                                        "3(1e-14 -2e-15 2.5e-14)"))
+    assert checks.boundary_min(field, ["floor"]) == -2e-15
+    assert checks.boundary_min(field, ["ceiling"]) == 1e-13
+    assert checks.boundary_min(field, ["sides"]) == 0
+    assert checks.boundary_min(field) == -2e-15
+    with pytest.raises(CheckError, match="no boundary values on roof"):
+        checks.boundary_min(field, ["roof"])
+
+
 def test_compare_fields(tmp_path):
     a, b = tmp_path / "a", tmp_path / "b"
     a.write_text(MASS_STICK)

@@ -801,7 +801,10 @@ void Foam::AdhesiveWallInteraction<CloudType>::setUpResuspension()
     }
     if (any)
     {
-        sites_ = std::make_shared<depositSites>(this->owner().mesh(), resuspends);
+        sites_ = std::make_shared<depositSites>
+        (
+            this->owner().mesh(), resuspends, wallPatches()
+        );
     }
 }
 

@@ -2,12 +2,27 @@
 #include "depositSites.H"
 #include "releaseCompat.H"
 
-Foam::depositSites::depositSites(const fvMesh& mesh, const boolList& resuspends)
+Foam::depositSites::depositSites
+(
+    const fvMesh& mesh,
+    const boolList& resuspends,
+    const labelList& walls
+)
 :
     mesh_(mesh),
     resuspends_(resuspends),
+    walls_(resuspends.size(), false),
     flow_(resuspends.size())
-{}
+{
+    for (const label patchi : walls)
+    {
+        walls_[patchi] = true;
+    }
+    forAll(resuspends_, patchi)
+    {
+        walls_[patchi] = walls_[patchi] || resuspends_[patchi];
+    }
+}
 
 
 std::optional<Foam::depositSites::site> Foam::depositSites::find
@@ -29,7 +44,7 @@ std::optional<Foam::depositSites::site> Foam::depositSites::find
             continue;
         }
         const label patchi = patches.whichPatch(facei);
-        if (!resuspends_[patchi])
+        if (!walls_[patchi])
         {
             continue;
         }
@@ -43,19 +58,25 @@ std::optional<Foam::depositSites::site> Foam::depositSites::find
         }
     }
 
-    if (walls_)
+    if (triangles_)
     {
-        const auto triangle = walls_->nearestLocal(celli, p);
+        const auto triangle = triangles_->nearestLocal(celli, p);
         if (triangle && triangle->second < nearestDistance)
         {
-            const wallTriangles::origin& from = walls_->originOf(triangle->first);
-            if (resuspends_[from.patchi])
-            {
-                const label facei = patches[from.patchi].start() + from.facei;
-                const vector& area = mesh_.faceAreas()[facei];
-                nearest = site{from.patchi, from.facei, area/mag(area)};
-            }
+            const wallTriangles::origin& from =
+                triangles_->originOf(triangle->first);
+            const label facei = patches[from.patchi].start() + from.facei;
+            const vector& area = mesh_.faceAreas()[facei];
+            nearest = site{from.patchi, from.facei, area/mag(area)};
         }
+    }
+
+    // The deposit sits on the nearest wall of the model: on a wall that
+    // does not resuspend it stays (in a corner, a deposit on a plain stick
+    // wall is not the floor's)
+    if (nearest && !resuspends_[nearest->patchi])
+    {
+        return std::nullopt;
     }
     return nearest;
 }

@@ -591,12 +591,12 @@ def cloud_mass(time_folder, cloud="kinematicCloud"):
                      for di, ni, r in zip(d, n, rho))
 
 
-def boundary_sum(path, patches=()):
-    """The sum of the boundary values of a volScalarField file over the
-    patches named (all those with values when none is). A uniform value
-    cannot be summed without the patch's size: a uniform non-zero value on
-    a patch summed is a CheckError, as is a patch named that the field does
-    not have, or a field with no boundary values at all."""
+def boundary_values(path, patches=()):
+    """The boundary values of a volScalarField file on the patches named
+    (all those with values when none is), as a list; a uniform zero adds
+    none. A uniform non-zero value cannot be listed without the patch's
+    size: it is a CheckError, as is a patch named that the field does not
+    have, or a field with no boundary values at all."""
     fields = foam.parse(foam.body(path)).get("boundaryField", {})
     values = {name: entries["value"] for name, entries in fields.items()
               if isinstance(entries, dict) and "value" in entries}
@@ -606,7 +606,7 @@ def boundary_sum(path, patches=()):
                          f" (it has {' '.join(values) or 'none'})")
     if not values:
         raise CheckError(f"{path}: no boundary values")
-    total = []
+    found = []
     for patch in patches or values:
         value = values[patch]
         if isinstance(value, list) and value and value[0] == "uniform":
@@ -614,10 +614,24 @@ def boundary_sum(path, patches=()):
                 raise CheckError(f"{path}: uniform {value[1]} on {patch}: "
                                  "its face count is not in the file")
         elif isinstance(value, list) and value and value[0] == "nonuniform":
-            total += [float(v) for v in value[-1]]
+            found += [float(v) for v in value[-1]]
         else:
             raise CheckError(f"{path}: value of {patch}: {value}")
-    return math.fsum(total)
+    return found
+
+
+def boundary_sum(path, patches=()):
+    """The sum of the boundary values of a volScalarField file over the
+    patches named (all those with values when none is): boundary_values'
+    errors."""
+    return math.fsum(boundary_values(path, patches))
+
+
+def boundary_min(path, patches=()):
+    """The smallest boundary value of a volScalarField file on the patches
+    named (0 where they hold only a uniform zero): boundary_values'
+    errors."""
+    return min(boundary_values(path, patches), default=0.0)
 
 
 def injected_mass(case=".",
@@ -1376,6 +1390,13 @@ def _boundary_sum(path, *patches):
     """The sum of a volScalarField's boundary values over the patches (all
     when none is named)."""
     print(fmt(boundary_sum(path, patches)))
+
+
+@command("boundaryMin", "FIELD [PATCH...]", 1, ANY)
+def _boundary_min(path, *patches):
+    """The smallest of a volScalarField's boundary values on the patches
+    (all when none is named)."""
+    print(fmt(boundary_min(path, patches)))
 
 
 @command("injectedMass", "[CASE]", 0, 1)
