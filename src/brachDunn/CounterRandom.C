@@ -72,6 +72,19 @@ std::uint64_t randomBits
 }
 
 
+std::uint64_t textCounter(const std::string& text)
+{
+    // FNV-1a, 64 bits: offset basis and prime of the published parameters
+    std::uint64_t hash = 0xcbf29ce484222325ULL;
+    for (const unsigned char c : text)
+    {
+        hash ^= c;
+        hash *= 0x100000001b3ULL;
+    }
+    return hash;
+}
+
+
 double uniformFromBits(std::uint64_t bits)
 {
     // k + 1/2 < 2^52 needs 53 bits: exact, so never 0 nor 1

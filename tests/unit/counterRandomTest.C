@@ -115,6 +115,18 @@ TEST(CounterRandom, PhiloxAgainstAReference)
 }
 
 
+TEST(CounterRandom, TextCounterIsFnv1a)
+{
+    // The FNV-1a 64-bit test vectors of its authors' reference tables:
+    // "" gives the offset basis, "a" 0xaf63dc4c8601ec8c, "foobar"
+    // 0x85944171f73967e8
+    EXPECT_EQ(textCounter(""), 0xcbf29ce484222325ULL);
+    EXPECT_EQ(textCounter("a"), 0xaf63dc4c8601ec8cULL);
+    EXPECT_EQ(textCounter("foobar"), 0x85944171f73967e8ULL);
+    EXPECT_NE(textCounter("0.0003"), textCounter("0.0004"));
+}
+
+
 TEST(CounterRandom, PinnedBits)
 {
     // From an implementation in Python integers (checked there against the

@@ -5,7 +5,7 @@
 #include "wallPolyPatch.H"
 #include "CounterRandom.H"
 
-#include <cstring>
+#include <algorithm>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -815,18 +815,17 @@ void Foam::AdhesiveWallInteraction<CloudType>::resuspend()
     const fvMesh& mesh = this->owner().mesh();
     const Time& time = mesh.time();
     const scalar dt = time.deltaTValue();
-    // The per-step draws: counter = the bits of the step's time (a
-    // continuation that restarts the time index, from a time folder
-    // without uniform/time, would repeat the index's draws; a case never
-    // repeats a time), the sign bit flipped so that t = 0 is not the
-    // adhesion's counter, 0. The key's high bits set apart these streams
-    // from other users of (seed, origProc, origId) (exactBrownianMotion)
+    // The per-step draws: counter = a hash of the step's time name (its
+    // index would repeat in a continuation from a time folder without
+    // uniform/time, which starts the index again; its value's last bits
+    // differ between a straight run, which sums the steps, and a restart,
+    // which reads the folder's name; the name is the same in both, and a
+    // case never repeats it); the adhesion's counter is 0. The key's high
+    // bits set apart these streams from other users of (seed, origProc,
+    // origId) (exactBrownianMotion)
     constexpr std::uint64_t stream = std::uint64_t(1) << 62;
-    const double stepTime = time.value();
-    std::uint64_t step = 0;
-    static_assert(sizeof step == sizeof stepTime);
-    std::memcpy(&step, &stepTime, sizeof step);
-    step ^= std::uint64_t(1) << 63;
+    const std::uint64_t step =
+        std::max(brachDunn::textCounter(compat::timeName(time)), std::uint64_t(1));
 
     sites_->update(this->owner().U(), this->owner().rho(), this->owner().mu());
 

@@ -232,7 +232,10 @@ Foam::scalar Foam::AdhesiveWallSurfaceContact<CloudType>::movedOver() const
     // cloud's trackTime), and a colliding cloud's collision sub-cycles over
     // the sub-cycle's step, to which the time is set meanwhile
     // (CollidingCloud::motion): a sub-step's dt is that step's part.
-    // Steady clouds are refused by the model (wallInteractionCloud::check)
+    // Steady clouds are refused by the model (wallInteractionCloud::check).
+    // Not in a parcel's injection move (InjectionModel::inject moves it
+    // over the rest of the step after its injection time, which a cloud
+    // function does not see): there too little is taken back (header)
     return this->owner().db().time().deltaTValue();
 }
 
