@@ -308,14 +308,14 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::checkMovingWalls() const
         const scalar speed =
             isA<wallPolyPatch>(patches[patchi]) && Uw.fixesValue() && Uw.size()
           ? max(mag(Uw)) : 0;
-        if (returnReduce(speed, maxOp<scalar>()) > 0)
+        const scalar fastest = returnReduce(speed, maxOp<scalar>());
+        if (fastest > 0)
         {
             FatalErrorInFunction
                 << "Cloud function " << this->modelName() << " of cloud "
                 << this->owner().name() << ": wall patch "
                 << patches[patchi].name() << " moves (its U condition sets "
-                << "up to " << returnReduce(speed, maxOp<scalar>())
-                << " m/s) in a parallel run, and contact at the surface"
+                << "up to " << fastest << " m/s) in a parallel run, and contact at the surface"
                 << " takes the faces it holds for a neighbouring processor as"
                 << " still. Run this case in serial, or without "
                 << this->modelName() << " (contact at the centre)"
