@@ -929,8 +929,9 @@ void Foam::AdhesiveWallInteraction<CloudType>::resuspend()
         {
             // (the channelResuspension tutorial does this on purpose: a
             // laminar Couette flow of a turbulent channel's wall stress)
-            Info<< "    rockNRoll on " << patch.c_str() << ": the flow has no"
-                << " turbulence model (no nut), so u* is that of the laminar"
+            Info<< "    rockNRoll on " << patch.c_str() << ": the carrier"
+                << " flow has no RAS or LES turbulence model, so u* is that"
+                << " of the laminar"
                 << " wall shear stress, taken as a turbulent boundary"
                 << " layer's (bursts of frequency frequencyPlus u*^2/nu and"
                 << " the fluctuating moment are those of turbulent flow)"

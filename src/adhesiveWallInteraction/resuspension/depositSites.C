@@ -1,5 +1,6 @@
 // adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 #include "depositSites.H"
+#include "carrierTurbulence.H"
 #include "releaseCompat.H"
 
 Foam::depositSites::depositSites
@@ -89,10 +90,8 @@ void Foam::depositSites::update
     const volScalarField& mu
 )
 {
-    const volScalarField* nut =
-        mesh_.foundObject<volScalarField>("nut")
-      ? &mesh_.lookupObject<volScalarField>("nut") : nullptr;
-    turbulent_ = nut;
+    const carrierTurbulence turbulence(U);
+    turbulent_ = turbulence.turbulent();
 
     forAll(resuspends_, patchi)
     {
@@ -105,16 +104,16 @@ void Foam::depositSites::update
         const vectorField gradU(U.boundaryField()[patchi].snGrad());
         const scalarField rhoC(rho.boundaryField()[patchi].patchInternalField());
         const scalarField muC(mu.boundaryField()[patchi].patchInternalField());
+        const tmp<scalarField> nutW(turbulence.nut(patch));
 
         List<flow>& faces = flow_[patchi];
         faces.setSize(patch.size());
         forAll(faces, facei)
         {
             const vector tangential = gradU[facei] - (n[facei] & gradU[facei])*n[facei];
-            const scalar nutW = nut ? nut->boundaryField()[patchi][facei] : 0;
             faces[facei] =
             {
-                (muC[facei] + rhoC[facei]*nutW)*mag(tangential),
+                (muC[facei] + rhoC[facei]*nutW()[facei])*mag(tangential),
                 rhoC[facei],
                 muC[facei]/rhoC[facei]
             };

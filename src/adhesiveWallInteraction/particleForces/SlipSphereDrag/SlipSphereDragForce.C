@@ -33,7 +33,13 @@ Foam::SlipSphereDragForce<CloudType>::SlipSphereDragForce
             )
         )
     ),
-    meanFreePath_(aerosolForces::readMeanFreePath(this->coeffs())),
+    meanFreePath_
+    (
+        aerosolForces::readMeanFreePath
+        (
+            this->coeffs(), aerosolForces::carrierHasTemperature<CloudType>
+        )
+    ),
     T_(-1)
 {
     const dictionary& coeffs = this->coeffs();
@@ -72,7 +78,13 @@ Foam::SlipSphereDragForce<CloudType>::SlipSphereDragForce
     else
     {
         settings +=
-            "from p " + text(meanFreePath_.p) + " Pa, "
+            "from "
+          + (
+                meanFreePath_.p > 0
+              ? "p " + text(meanFreePath_.p) + " Pa"
+              : std::string("the carrier's pressure")
+            )
+          + ", "
           + (T_ > 0 ? "T " + text(T_) + " K" : "the carrier's temperature")
           + ", molar mass " + text(meanFreePath_.molarMass)
           + " kg/mol and the carrier's viscosity";
@@ -117,7 +129,12 @@ Foam::scalar Foam::SlipSphereDragForce<CloudType>::slipCorrection
     return brachDunn::cunningham
     (
         p.d(),
-        meanFreePath_.at(aerosolForces::temperatureAt(T_, td), muc),
+        meanFreePath_.at
+        (
+            aerosolForces::temperatureAt(T_, td),
+            muc,
+            aerosolForces::pressureAt(meanFreePath_.p, this->owner(), p, td)
+        ),
         coefficients_
     );
 }

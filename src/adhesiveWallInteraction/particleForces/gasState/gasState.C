@@ -101,20 +101,37 @@ Foam::scalar Foam::aerosolForces::readTemperature
 Foam::scalar Foam::aerosolForces::meanFreePathSource::at
 (
     const scalar T,
-    const scalar mu
+    const scalar mu,
+    const scalar pressure
 ) const
 {
-    return given >= 0 ? given : brachDunn::meanFreePath(mu, p, T, molarMass);
+    return
+        given >= 0
+      ? given
+      : brachDunn::meanFreePath(mu, pressure, T, molarMass);
 }
 
 
 Foam::aerosolForces::meanFreePathSource
-Foam::aerosolForces::readMeanFreePath(const dictionary& dict)
+Foam::aerosolForces::readMeanFreePath
+(
+    const dictionary& dict,
+    const bool carrierHasPressure
+)
 {
     meanFreePathSource source;
     const bool given = checkedInput::find(dict, "meanFreePath") != nullptr;
     const bool fromP = checkedInput::find(dict, "p") != nullptr;
-    if (given == fromP)
+    if (carrierHasPressure && fromP)
+    {
+        checkedInput::fail
+        (
+            dict, "p", checkedInput::entryText(*checkedInput::find(dict, "p")),
+            "is not read in a thermo cloud: the carrier's pressure at the "
+            "parcel is used (remove p)"
+        );
+    }
+    if (!carrierHasPressure && given == fromP)
     {
         checkedInput::fail
         (
@@ -144,7 +161,10 @@ Foam::aerosolForces::readMeanFreePath(const dictionary& dict)
     }
     else
     {
-        source.p = readGasValue(dict, "p", brachDunn::magnitude::pressure);
+        if (!carrierHasPressure)
+        {
+            source.p = readGasValue(dict, "p", brachDunn::magnitude::pressure);
+        }
         if (checkedInput::find(dict, "molarMass"))
         {
             source.molarMass = readGasValue
