@@ -41,6 +41,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::setUp()
             << this->owner().patchInteraction().type() << exit(FatalError);
     }
     model_->countSurfaceContacts(this->modelName());
+    checkOnlyMoves();
     checkMaxDiameter();
     walls_ = std::make_shared<wallTriangles>
     (
@@ -113,6 +114,63 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::checkMaxDiameter() const
             << " wall search reaches maxDiameter/2 from every cell, which"
             << " costs memory and time. Set it to the largest diameter of"
             << " the parcels" << endl;
+    }
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallSurfaceContact<CloudType>::checkOnlyMoves() const
+{
+    const std::string why =
+        ": contact at the surface moves a parcel back to where it touched a"
+        " wall, and OpenFOAM has by then exchanged the whole sub-step with"
+        " the carrier and the parcel (calc before the cloud functions'"
+        " postMove); the part taken back would count twice. Contact at the"
+        " surface is for clouds whose sub-steps only move their parcels:"
+        " remove " + this->modelName() + " from cloudFunctions (contact at"
+        " the centre) or ";
+    const cloudSolution& solution = this->owner().solution();
+    if (solution.coupled())
+    {
+        checkedInput::fail
+        (
+            solution.dict(), "coupled", "true",
+            "two-way coupling" + why + "set coupled false (one-way coupling,"
+            " as in dilute aerosols)"
+        );
+    }
+    const dictionary& subModels = this->owner().subModelProperties();
+    if (checkedInput::readSwitch(subModels, "radiation", false))
+    {
+        checkedInput::fail
+        (
+            subModels, "radiation", "on",
+            "the parcels' radiation" + why + "set radiation off"
+        );
+    }
+    for
+    (
+        const char* keyword :
+        {
+            "heatTransferModel", "phaseChangeModel", "devolatilisationModel",
+            "surfaceReactionModel", "heterogeneousReactingModel",
+            "atomizationModel", "breakupModel"
+        }
+    )
+    {
+        if
+        (
+            checkedInput::find(subModels, keyword)
+         && checkedInput::readWord(subModels, keyword) != "none"
+        )
+        {
+            checkedInput::fail
+            (
+                subModels, keyword, checkedInput::readWord(subModels, keyword),
+                "changes the parcels' temperature, mass or size over a"
+                " sub-step" + why + "set " + keyword + " none"
+            );
+        }
     }
 }
 
@@ -395,6 +453,8 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::afterMove
             (1 - contact->fraction)*dt/movedOver(),
             debug != 0
         );
+        // (OpenFOAM aged it by the whole sub-step before postMove)
+        p.age() -= (1 - contact->fraction)*dt;
     }
 
     // The wall normal out of the domain, from the centre to the closest
