@@ -970,7 +970,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::release
     }
     if (deposits_)
     {
-        deposits_->addCapture(s.patchi, s.facei, -mass, -nParticle);
+        deposits_->addCapture(s.patchi, s.facei, -mass, -nParticle, s.proc);
     }
     if (records_ && records_->active())
     {

@@ -1,6 +1,9 @@
 // adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 #include "depositSites.H"
 #include "carrierTurbulence.H"
+#include "PstreamBuffers.H"
+#include "UIPstream.H"
+#include "UOPstream.H"
 #include "releaseCompat.H"
 
 Foam::depositSites::depositSites
@@ -55,20 +58,31 @@ std::optional<Foam::depositSites::site> Foam::depositSites::find
         {
             nearestDistance = distance;
             const vector& area = mesh_.faceAreas()[facei];
-            nearest = site{patchi, facei - patches[patchi].start(), area/mag(area)};
+            nearest = site{patchi, facei - patches[patchi].start(), area/mag(area), -1};
         }
     }
 
     if (triangles_)
     {
-        const auto triangle = triangles_->nearestLocal(celli, p);
+        const auto triangle = triangles_->nearest(celli, p);
         if (triangle && triangle->second < nearestDistance)
         {
             const wallTriangles::origin& from =
                 triangles_->originOf(triangle->first);
-            const label facei = patches[from.patchi].start() + from.facei;
-            const vector& area = mesh_.faceAreas()[facei];
-            nearest = site{from.patchi, from.facei, area/mag(area)};
+            if (from.proc == Pstream::myProcNo())
+            {
+                const label facei = patches[from.patchi].start() + from.facei;
+                const vector& area = mesh_.faceAreas()[facei];
+                nearest = site{from.patchi, from.facei, area/mag(area), -1};
+            }
+            else
+            {
+                nearest = site
+                {
+                    from.patchi, from.facei,
+                    triangles_->normal(triangle->first), from.proc
+                };
+            }
         }
     }
 
@@ -117,6 +131,140 @@ void Foam::depositSites::update
                 rhoC[facei],
                 muC[facei]/rhoC[facei]
             };
+        }
+    }
+    exchange();
+}
+
+
+const Foam::depositSites::flow& Foam::depositSites::flowAt
+(
+    const site& s
+) const
+{
+    if (s.proc < 0)
+    {
+        return flow_[s.patchi][s.facei];
+    }
+    const auto found = remoteIndex_[s.proc].cfind(labelPair(s.patchi, s.facei));
+    if (found.found())
+    {
+        return remoteFlow_[s.proc][*found];
+    }
+    FatalErrorInFunction
+        << "No flow of face " << s.facei << " of patch " << s.patchi
+        << " of processor " << s.proc << " was asked for"
+        << exit(FatalError);
+    return flow_[s.patchi][s.facei];
+}
+
+
+void Foam::depositSites::ask()
+{
+    asking_ = true;
+    remoteIndex_.setSize(Pstream::nProcs());
+    askedHere_.setSize(Pstream::nProcs());
+    asked_.setSize(Pstream::nProcs());
+    remoteFlow_.setSize(Pstream::nProcs());
+    if (!triangles_ || !Pstream::parRun())
+    {
+        return;
+    }
+
+    // The resuspending faces of other processors held here, once each
+    remoteIndex_.setSize(Pstream::nProcs());
+    List<DynamicList<labelPair>> faces(Pstream::nProcs());
+    for (label t = 0; t < triangles_->size(); ++t)
+    {
+        const wallTriangles::origin& from = triangles_->originOf(t);
+        const labelPair face(from.patchi, from.facei);
+        if
+        (
+            from.proc != Pstream::myProcNo() && resuspends_[from.patchi]
+         && remoteIndex_[from.proc].insert(face, faces[from.proc].size())
+        )
+        {
+            faces[from.proc].append(face);
+        }
+    }
+
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(faces, proc)
+    {
+        askedHere_[proc] = faces[proc];
+        if (proc != Pstream::myProcNo() && faces[proc].size())
+        {
+            labelList flat(2*faces[proc].size());
+            forAll(faces[proc], i)
+            {
+                flat[2*i] = faces[proc][i].first();
+                flat[2*i + 1] = faces[proc][i].second();
+            }
+            UOPstream toProc(proc, buffers);
+            toProc << flat;
+        }
+    }
+    labelList received;
+    buffers.finishedSends(received);
+    forAll(asked_, proc)
+    {
+        if (proc != Pstream::myProcNo() && received[proc] > 0)
+        {
+            labelList flat;
+            UIPstream fromProc(proc, buffers);
+            fromProc >> flat;
+            asked_[proc].setSize(flat.size()/2);
+            forAll(asked_[proc], i)
+            {
+                asked_[proc][i] = labelPair(flat[2*i], flat[2*i + 1]);
+            }
+        }
+    }
+}
+
+
+void Foam::depositSites::exchange()
+{
+    if (!asking_)
+    {
+        ask();
+    }
+    if (!triangles_ || !Pstream::parRun())
+    {
+        return;
+    }
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(asked_, proc)
+    {
+        if (asked_[proc].empty())
+        {
+            continue;
+        }
+        scalarList values(3*asked_[proc].size());
+        forAll(asked_[proc], i)
+        {
+            const flow& f = flow_[asked_[proc][i].first()][asked_[proc][i].second()];
+            values[3*i] = f.tauW;
+            values[3*i + 1] = f.rho;
+            values[3*i + 2] = f.nu;
+        }
+        UOPstream toProc(proc, buffers);
+        toProc << values;
+    }
+    buffers.finishedSends();
+    forAll(askedHere_, proc)
+    {
+        remoteFlow_[proc].setSize(askedHere_[proc].size());
+        if (askedHere_[proc].empty())
+        {
+            continue;
+        }
+        scalarList values;
+        UIPstream fromProc(proc, buffers);
+        fromProc >> values;
+        forAll(remoteFlow_[proc], i)
+        {
+            remoteFlow_[proc][i] = {values[3*i], values[3*i + 1], values[3*i + 2]};
         }
     }
 }

@@ -473,7 +473,7 @@ int Foam::wallTriangles::containing
 }
 
 
-std::optional<std::pair<int, Foam::scalar>> Foam::wallTriangles::nearestLocal
+std::optional<std::pair<int, Foam::scalar>> Foam::wallTriangles::nearest
 (
     const label celli,
     const point& p
@@ -484,10 +484,6 @@ std::optional<std::pair<int, Foam::scalar>> Foam::wallTriangles::nearestLocal
     for (int k = cellStart_[celli]; k < cellStart_[celli + 1]; ++k)
     {
         const int t = cellTriangles_[k];
-        if (origins_[t].proc != Pstream::myProcNo())
-        {
-            continue;
-        }
         const brachDunn::PreparedTriangle& prepared = triangles_[t];
         const brachDunn::Vector3 c = brachDunn::closestPoint
         (
@@ -500,6 +496,17 @@ std::optional<std::pair<int, Foam::scalar>> Foam::wallTriangles::nearestLocal
         }
     }
     return nearest;
+}
+
+
+
+Foam::vector Foam::wallTriangles::normal(const int triangle) const
+{
+    const brachDunn::PreparedTriangle& t = triangles_[triangle];
+    const brachDunn::Vector3 n =
+        cross(t.vertex[1] - t.vertex[0], t.vertex[2] - t.vertex[0]);
+    const vector v(n.x, n.y, n.z);
+    return v/mag(v);
 }
 
 
