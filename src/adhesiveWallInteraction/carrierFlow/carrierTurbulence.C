@@ -26,12 +26,6 @@ Foam::carrierTurbulence::carrierTurbulence(const volVectorField& U)
 }
 
 
-Foam::word Foam::carrierTurbulence::name() const
-{
-    return model_ ? model_->name() : word("none");
-}
-
-
 Foam::tmp<Foam::scalarField> Foam::carrierTurbulence::nut
 (
     const fvPatch& patch

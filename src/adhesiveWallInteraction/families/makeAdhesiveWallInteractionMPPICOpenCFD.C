@@ -2,12 +2,15 @@
 // adhesiveWallInteraction for the clouds of type basicKinematicMPPICCloud
 #include "basicKinematicMPPICCloud.H"
 #include "AdhesiveWallInteraction.H"
-#include "AdhesiveWallSurfaceContact.H"
+#include "AdhesiveWallSurfaceContactRefused.H"
 #include "SlipSphereDragForce.H"
 #include "ExactBrownianMotionRefused.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicKinematicMPPICCloud);
-makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicKinematicMPPICCloud);
+// Contact at the surface is not for MPPIC clouds (two-way coupled by
+// design, AdhesiveWallSurfaceContactRefused.H): selected there, it stops
+// saying so
+makeCloudFunctionObjectType(AdhesiveWallSurfaceContactRefused, basicKinematicMPPICCloud);
 makeParticleForceModelType(SlipSphereDragForce, basicKinematicMPPICCloud);
 // exactBrownianMotion is not built for MPPIC clouds (their packing models
 // move parcels outside the sub-step loop the exact step is written for):

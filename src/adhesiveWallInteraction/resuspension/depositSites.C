@@ -75,13 +75,22 @@ std::optional<Foam::depositSites::site> Foam::depositSites::find
                 const vector& area = mesh_.faceAreas()[facei];
                 nearest = site{from.patchi, from.facei, area/mag(area), -1};
             }
-            else
+            else if (resuspends_[from.patchi])
             {
+                // (the face's area vector from its triangles, ask())
+                const vector& area = remoteArea_[from.proc]
+                [
+                    remoteIndex_[from.proc][labelPair(from.patchi, from.facei)]
+                ];
                 nearest = site
                 {
-                    from.patchi, from.facei,
-                    triangles_->normal(triangle->first), from.proc
+                    from.patchi, from.facei, area/mag(area), from.proc
                 };
+            }
+            else
+            {
+                // Another processor's wall that does not resuspend
+                return std::nullopt;
             }
         }
     }
@@ -155,7 +164,7 @@ const Foam::depositSites::flow& Foam::depositSites::flowAt
         << "No flow of face " << s.facei << " of patch " << s.patchi
         << " of processor " << s.proc << " was asked for"
         << exit(FatalError);
-    return flow_[s.patchi][s.facei];
+    return remoteFlow_[s.proc][0];
 }
 
 
@@ -163,6 +172,7 @@ void Foam::depositSites::ask()
 {
     asking_ = true;
     remoteIndex_.setSize(Pstream::nProcs());
+    remoteArea_.setSize(Pstream::nProcs());
     askedHere_.setSize(Pstream::nProcs());
     asked_.setSize(Pstream::nProcs());
     remoteFlow_.setSize(Pstream::nProcs());
@@ -171,21 +181,33 @@ void Foam::depositSites::ask()
         return;
     }
 
-    // The resuspending faces of other processors held here, once each
-    remoteIndex_.setSize(Pstream::nProcs());
+    // The resuspending faces of other processors held here within reach
+    // of this processor's cells, once each, and their area vectors
+    const std::vector<bool> candidate(triangles_->candidates());
     List<DynamicList<labelPair>> faces(Pstream::nProcs());
+    List<DynamicList<vector>> areas(Pstream::nProcs());
     for (label t = 0; t < triangles_->size(); ++t)
     {
         const wallTriangles::origin& from = triangles_->originOf(t);
-        const labelPair face(from.patchi, from.facei);
         if
         (
-            from.proc != Pstream::myProcNo() && resuspends_[from.patchi]
-         && remoteIndex_[from.proc].insert(face, faces[from.proc].size())
+            from.proc == Pstream::myProcNo() || !resuspends_[from.patchi]
+         || !candidate[t]
         )
         {
-            faces[from.proc].append(face);
+            continue;
         }
+        const labelPair face(from.patchi, from.facei);
+        if (remoteIndex_[from.proc].insert(face, faces[from.proc].size()))
+        {
+            faces[from.proc].append(face);
+            areas[from.proc].append(Zero);
+        }
+        areas[from.proc][remoteIndex_[from.proc][face]] += triangles_->areaVector(t);
+    }
+    forAll(areas, proc)
+    {
+        remoteArea_[proc] = areas[proc];
     }
 
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);

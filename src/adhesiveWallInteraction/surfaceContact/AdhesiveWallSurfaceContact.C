@@ -134,7 +134,8 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::checkOnlyMoves() const
     {
         checkedInput::fail
         (
-            solution.dict(), "coupled", "true",
+            solution.dict(), "coupled",
+            checkedInput::entryText(*checkedInput::find(solution.dict(), "coupled")),
             "two-way coupling" + why + "set coupled false (one-way coupling,"
             " as in dilute aerosols)"
         );
@@ -144,7 +145,8 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::checkOnlyMoves() const
     {
         checkedInput::fail
         (
-            subModels, "radiation", "on",
+            subModels, "radiation",
+            checkedInput::entryText(*checkedInput::find(subModels, "radiation")),
             "the parcels' radiation" + why + "set radiation off"
         );
     }

@@ -499,14 +499,23 @@ std::optional<std::pair<int, Foam::scalar>> Foam::wallTriangles::nearest
 }
 
 
-
-Foam::vector Foam::wallTriangles::normal(const int triangle) const
+Foam::vector Foam::wallTriangles::areaVector(const int triangle) const
 {
     const brachDunn::PreparedTriangle& t = triangles_[triangle];
     const brachDunn::Vector3 n =
         cross(t.vertex[1] - t.vertex[0], t.vertex[2] - t.vertex[0]);
-    const vector v(n.x, n.y, n.z);
-    return v/mag(v);
+    return 0.5*vector(n.x, n.y, n.z);
+}
+
+
+std::vector<bool> Foam::wallTriangles::candidates() const
+{
+    std::vector<bool> used(triangles_.size(), false);
+    for (const int t : cellTriangles_)
+    {
+        used[t] = true;
+    }
+    return used;
 }
 
 

@@ -126,17 +126,23 @@ Foam::scalar Foam::SlipSphereDragForce<CloudType>::slipCorrection
     const scalar muc
 ) const
 {
-    return brachDunn::cunningham
-    (
-        p.d(),
-        meanFreePath_.at
-        (
-            aerosolForces::temperatureAt(T_, td),
-            muc,
-            aerosolForces::pressureAt(meanFreePath_.p, this->owner(), p, td)
-        ),
-        coefficients_
-    );
+    if (meanFreePath_.given >= 0)
+    {
+        return brachDunn::cunningham(p.d(), meanFreePath_.given, coefficients_);
+    }
+    // (the gas's state looked up only where it is used)
+    const scalar T = aerosolForces::temperatureAt(T_, td);
+    const scalar pressure =
+        aerosolForces::pressureAt(meanFreePath_.p, this->owner(), p, td);
+    const scalar lambda = meanFreePath_.at(T, muc, pressure);
+    if (debug)
+    {
+        // (DebugSwitches { slipSphereDrag 1; }: what a parcel's drag took)
+        Pout<< "slipSphereDrag: cell " << p.cell() << " p " << pressure
+            << " Pa T " << T << " K mean free path " << lambda << " m"
+            << endl;
+    }
+    return brachDunn::cunningham(p.d(), lambda, coefficients_);
 }
 
 
