@@ -69,29 +69,24 @@ std::optional<Foam::depositSites::site> Foam::depositSites::find
         {
             const wallTriangles::origin& from =
                 triangles_->originOf(triangle->first);
-            if (from.proc == Pstream::myProcNo())
-            {
-                const label facei = patches[from.patchi].start() + from.facei;
-                const vector& area = mesh_.faceAreas()[facei];
-                nearest = site{from.patchi, from.facei, area/mag(area), -1};
-            }
-            else if (resuspends_[from.patchi])
-            {
-                // (the face's area vector from its triangles, ask())
-                const vector& area = remoteArea_[from.proc]
-                [
-                    remoteIndex_[from.proc][labelPair(from.patchi, from.facei)]
-                ];
-                nearest = site
-                {
-                    from.patchi, from.facei, area/mag(area), from.proc
-                };
-            }
-            else
+            if (from.proc != Pstream::myProcNo() && !resuspends_[from.patchi])
             {
                 // Another processor's wall that does not resuspend
                 return std::nullopt;
             }
+            // (a remote face's area vector from its triangles, ask())
+            const vector& area =
+                from.proc == Pstream::myProcNo()
+              ? mesh_.faceAreas()[patches[from.patchi].start() + from.facei]
+              : remoteArea_[from.proc]
+                [
+                    remoteIndex_[from.proc][labelPair(from.patchi, from.facei)]
+                ];
+            nearest = site
+            {
+                from.patchi, from.facei, area/mag(area),
+                from.proc == Pstream::myProcNo() ? -1 : from.proc
+            };
         }
     }
 
@@ -168,19 +163,9 @@ const Foam::depositSites::flow& Foam::depositSites::flowAt
 }
 
 
-void Foam::depositSites::ask()
+Foam::List<Foam::DynamicList<Foam::labelPair>>
+Foam::depositSites::remoteFaces()
 {
-    asking_ = true;
-    remoteIndex_.setSize(Pstream::nProcs());
-    remoteArea_.setSize(Pstream::nProcs());
-    askedHere_.setSize(Pstream::nProcs());
-    asked_.setSize(Pstream::nProcs());
-    remoteFlow_.setSize(Pstream::nProcs());
-    if (!triangles_ || !Pstream::parRun())
-    {
-        return;
-    }
-
     // The resuspending faces of other processors held here within reach
     // of this processor's cells, once each, and their area vectors
     const std::vector<bool> candidate(triangles_->candidates());
@@ -209,6 +194,24 @@ void Foam::depositSites::ask()
     {
         remoteArea_[proc] = areas[proc];
     }
+    return faces;
+}
+
+
+void Foam::depositSites::ask()
+{
+    asking_ = true;
+    remoteIndex_.setSize(Pstream::nProcs());
+    remoteArea_.setSize(Pstream::nProcs());
+    askedHere_.setSize(Pstream::nProcs());
+    asked_.setSize(Pstream::nProcs());
+    remoteFlow_.setSize(Pstream::nProcs());
+    if (!triangles_ || !Pstream::parRun())
+    {
+        return;
+    }
+
+    const List<DynamicList<labelPair>> faces(remoteFaces());
 
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     forAll(faces, proc)
