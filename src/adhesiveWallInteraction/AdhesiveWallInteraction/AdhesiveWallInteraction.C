@@ -137,6 +137,13 @@ void Foam::AdhesiveWallInteraction<CloudType>::restore()
     this->getModelProperty("initialMass", initial);
     compat::broadcast(initial);
     balance_.restore(initial);
+    labelList detached;
+    this->getModelProperty("detached", detached);
+    compat::broadcast(detached);
+    for (label i = 0; i + 1 < detached.size(); i += 2)
+    {
+        detached_.insert({detached[i], detached[i + 1]});
+    }
 
     // The deposit fields must hold what the stored totals count
     const List<fateStatistics::row> totals(statistics_.totals());
@@ -582,6 +589,39 @@ void Foam::AdhesiveWallInteraction<CloudType>::countSurfaceContacts
 
 
 template<class CloudType>
+bool Foam::AdhesiveWallInteraction<CloudType>::rollsOn
+(
+    typename CloudType::parcelType& p,
+    const vector& nw,
+    const vector& Up,
+    const wallInteractionEntry& entry
+) const
+{
+    // A parcel the flow took off a wall, not yet out of the walls' reach:
+    // detachment is a rolling motion, not necessarily followed by
+    // entrainment (Ibrahim, Dunn & Brach 2003), so a capturing wall it
+    // touches does not capture it again; it keeps its motion along the
+    // wall (the part into the wall taken off) and the touch is no impact
+    using interaction = wallInteractionEntry::interaction;
+    if
+    (
+        detached_.empty()
+     || (entry.type() != interaction::adhesive && entry.type() != interaction::stick)
+     || !detached_.count({p.origProc(), p.origId()})
+    )
+    {
+        return false;
+    }
+    const scalar un = (p.U() - Up) & nw;
+    if (un > 0)
+    {
+        p.U() -= un*nw;
+    }
+    return true;
+}
+
+
+template<class CloudType>
 brachDunn::Fate Foam::AdhesiveWallInteraction<CloudType>::interact
 (
     typename CloudType::parcelType& p,
@@ -597,6 +637,12 @@ brachDunn::Fate Foam::AdhesiveWallInteraction<CloudType>::interact
     using brachDunn::Fate;
     constexpr bool colliding =
         wallInteractionCloud::isColliding<typename CloudType::parcelType>::value;
+
+    if (rollsOn(p, nw, Up, entry))
+    {
+        keepParticle = true;
+        return Fate::notApproaching;
+    }
 
     vector omega = Zero;
     if constexpr (colliding)
@@ -703,6 +749,17 @@ void Foam::AdhesiveWallInteraction<CloudType>::store
 )
 {
     this->setModelProperty("initialMass", balance_.storedText());
+    if (sites_)
+    {
+        labelList detached(2*detached_.size());
+        label i = 0;
+        for (const auto& key : detached_)
+        {
+            detached[i++] = key.first;
+            detached[i++] = key.second;
+        }
+        this->setModelProperty("detached", detached);
+    }
     if (grade_)
     {
         this->setModelProperty("gradeEfficiency", grade_->storedText());
@@ -746,246 +803,4 @@ void Foam::AdhesiveWallInteraction<CloudType>::writeSurfaceContacts
 }
 
 
-template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::setUpResuspension()
-{
-    const polyBoundaryMesh& patches = compat::boundaryMesh(this->owner().mesh());
-    boolList resuspends(patches.size(), false);
-    bool any = false;
-    forAll(patches, patchi)
-    {
-        const wallInteractionEntry* entry = coeffs_.entries().entryOf(patchi);
-        // (capture remove with a resuspending entry stopped with the
-        // coefficients, wallInteractionCoeffs)
-        resuspends[patchi] = entry && entry->resuspension();
-        any = any || resuspends[patchi];
-
-        // Biasi's fit of the adhesion spread holds below a radius of
-        // 35 um: an injector's larger size stops the run now, not at the
-        // deposit's first step
-        if
-        (
-            resuspends[patchi]
-         && entry->resuspension()->model.spread
-         == brachDunn::DepositResuspension::Spread::biasi
-        )
-        {
-            wallInteractionCloud::forEachInjectorSize
-            (
-                this->owner(),
-                [&](const dictionary& dict, const word& key, const scalar d)
-                {
-                    if (!(d > 0))
-                    {
-                        return;     // a distribution's minValue 0
-                    }
-                    try
-                    {
-                        brachDunn::biasiAdhesion(0.5*d);
-                    }
-                    catch (const brachDunn::InputError& err)
-                    {
-                        checkedInput::fail
-                        (
-                            dict, key, name(d),
-                            "a diameter beyond Biasi's adhesion spread"
-                            " (adhesionSpread biasi of entry "
-                          + std::string(entry->name()) + "): radius "
-                          + err.requirement() + "; give adhesionSpread"
-                            " logNormal or none for such particles"
-                        );
-                    }
-                }
-            );
-        }
-    }
-    if (any)
-    {
-        sites_ = std::make_shared<depositSites>
-        (
-            this->owner().mesh(), resuspends, wallPatches()
-        );
-    }
-}
-
-
-template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::resuspend()
-{
-    const fvMesh& mesh = this->owner().mesh();
-    const Time& time = mesh.time();
-    const scalar dt = time.deltaTValue();
-    // The per-step draws: counter = a hash of the step's time name (its
-    // index would repeat in a continuation from a time folder without
-    // uniform/time, which starts the index again; its value's last bits
-    // differ between a straight run, which sums the steps, and a restart,
-    // which reads the folder's name; the name is the same in both, and a
-    // case never repeats it); the adhesion's counter is 0. The key's high
-    // bits set apart these streams from other users of (seed, origProc,
-    // origId) (exactBrownianMotion)
-    constexpr std::uint64_t stream = std::uint64_t(1) << 62;
-    const std::uint64_t step =
-        std::max(brachDunn::textCounter(compat::timeName(time)), std::uint64_t(1));
-
-    sites_->update(this->owner().U(), this->owner().rho(), this->owner().mu());
-
-    // Per patch: the deposits tested and the range of their friction
-    // velocities, for the log (a user judges the rates by u*)
-    const label nPatches = compat::boundaryMesh(mesh).size();
-    labelList tested(nPatches, 0);
-    scalarList uStarMin(nPatches, std::numeric_limits<scalar>::max());
-    scalarList uStarMax(nPatches, scalar(0));
-
-    for (auto& p : this->owner())
-    {
-        if
-        (
-            compat::isActive(p)
-         || capturedThisStep_.count({p.origProc(), p.origId()})
-        )
-        {
-            continue;
-        }
-        const point position = compat::position(p, mesh);
-        const auto s = sites_->find(p.cell(), position, p.d());
-        if (!s)
-        {
-            continue;
-        }
-        const resuspensionSettings& settings =
-            *coeffs_.entries().entryOf(s->patchi)->resuspension();
-        const depositSites::flow& flow = sites_->flowAt(*s);
-        const scalar uStar = Foam::sqrt(flow.tauW/flow.rho);
-        ++tested[s->patchi];
-        uStarMin[s->patchi] = min(uStarMin[s->patchi], uStar);
-        uStarMax[s->patchi] = max(uStarMax[s->patchi], uStar);
-        const std::uint64_t key1 = std::uint64_t(p.origProc()) | stream;
-        const std::uint64_t key2 = std::uint64_t(p.origId());
-        const scalar r = 0.5*p.d();
-
-        scalar leaving = 0;
-        try
-        {
-            const scalar fPrime = settings.model.reducedAdhesion
-            (
-                r,
-                brachDunn::uniformFromBits
-                (
-                    brachDunn::randomBits(settings.seed, key1, key2, 0)
-                )
-            );
-            leaving = settings.model.leavingProbability
-            (
-                r, fPrime, flow.tauW, flow.rho, flow.nu, dt
-            );
-        }
-        catch (const brachDunn::InputError& err)
-        {
-            FatalErrorInFunction
-                << "Deposit at " << position << " on patch "
-                << compat::boundaryMesh(mesh)[s->patchi].name()
-                << " (resuspension): " << err.what() << exit(FatalError);
-        }
-        const bool leaves =
-            leaving >= 1
-         || (
-                leaving > 0
-             && brachDunn::uniformFromBits
-                (
-                    brachDunn::randomBits(settings.seed, key1, key2, step)
-                ) < leaving
-            );
-        if (leaves)
-        {
-            release(p, position, *s, uStar);
-        }
-    }
-    capturedThisStep_.clear();
-
-    forAll(tested, patchi)
-    {
-        const wallInteractionEntry* entry = coeffs_.entries().entryOf(patchi);
-        if (!entry || !entry->resuspension())
-        {
-            continue;
-        }
-        const label n = returnReduce(tested[patchi], sumOp<label>());
-        if (!n)
-        {
-            continue;
-        }
-        const word& patch = compat::boundaryMesh(mesh)[patchi].name();
-        Info<< "    resuspension " << patch.c_str() << ": " << n
-            << " deposits tested, friction velocity u* "
-            << returnReduce(uStarMin[patchi], minOp<scalar>()) << " to "
-            << returnReduce(uStarMax[patchi], maxOp<scalar>()) << " m/s"
-            << endl;
-        if
-        (
-            !laminarSaid_ && !sites_->turbulent()
-         && entry->resuspension()->model.kind
-            == brachDunn::DepositResuspension::Kind::rockNRoll
-        )
-        {
-            // (the channelResuspension tutorial does this on purpose: a
-            // laminar Couette flow of a turbulent channel's wall stress)
-            Info<< "    rockNRoll on " << patch.c_str() << ": the carrier"
-                << " flow has no RAS or LES turbulence model, so u* is that"
-                << " of the laminar"
-                << " wall shear stress, taken as a turbulent boundary"
-                << " layer's (bursts of frequency frequencyPlus u*^2/nu and"
-                << " the fluctuating moment are those of turbulent flow)"
-                << endl;
-            laminarSaid_ = true;
-        }
-    }
-}
-
-
-template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::release
-(
-    typename CloudType::parcelType& p,
-    const point& position,
-    const depositSites::site& s,
-    const scalar frictionVelocity
-)
-{
-    const polyPatch& pp = compat::boundaryMesh(this->owner().mesh())[s.patchi];
-    const scalar nParticle = p.nParticle();
-    const scalar mass = nParticle*p.mass();
-
-    statistics_.add
-    (
-        statistics_.rowOf(s.patchi, compat::parcelInjectorId(p), p.d()),
-        brachDunn::Fate::resuspension, nParticle, mass, frictionVelocity, 0
-    );
-    if (grade_)
-    {
-        grade_->fated
-        (
-            gradeGroup(p), brachDunn::Fate::resuspension, nParticle, mass,
-            p.origProc(), p.origId()
-        );
-    }
-    if (deposits_)
-    {
-        deposits_->addCapture(s.patchi, s.facei, -mass, -nParticle, s.proc);
-    }
-    if (records_ && records_->active())
-    {
-        records_->add
-        ({
-            this->owner().mesh().time().value(),
-            scalar(pp.index()), scalar(s.facei),
-            position.x(), position.y(), position.z(),
-            p.d(), nParticle, 0, 0, scalar(brachDunn::Fate::resuspension),
-            0, 0, 0, 0
-        });
-    }
-
-    // Airborne again, at rest, clear of the wall it sat on
-    compat::setActive(p, true);
-    p.U() = Zero;
-    compat::displace(p, this->owner().mesh(), -1e-3*p.d()*s.normal);
-}
+// ************************************************************************* //

@@ -36,8 +36,26 @@ std::optional<Foam::depositSites::site> Foam::depositSites::find
     const scalar d
 ) const
 {
+    // The deposit sits on the nearest wall of the model: on a wall that
+    // does not resuspend it stays (in a corner, a deposit on a plain stick
+    // wall is not the floor's)
+    const std::optional<site> nearest = nearestWall(celli, p, 0.5*d*(1 + 1e-3));
+    if (nearest && !resuspends_[nearest->patchi])
+    {
+        return std::nullopt;
+    }
+    return nearest;
+}
+
+
+std::optional<Foam::depositSites::site> Foam::depositSites::nearestWall
+(
+    const label celli,
+    const point& p,
+    const scalar reach
+) const
+{
     const polyBoundaryMesh& patches = compat::boundaryMesh(mesh_);
-    const scalar reach = 0.5*d*(1 + 1e-3);
     std::optional<site> nearest;
     scalar nearestDistance = reach;
 
@@ -71,8 +89,9 @@ std::optional<Foam::depositSites::site> Foam::depositSites::find
                 triangles_->originOf(triangle->first);
             if (from.proc != Pstream::myProcNo() && !resuspends_[from.patchi])
             {
-                // Another processor's wall that does not resuspend
-                return std::nullopt;
+                // Another processor's wall that does not resuspend (its
+                // normal is not needed)
+                return site{from.patchi, from.facei, Zero, from.proc};
             }
             // (a remote face's area vector from its triangles, ask())
             const vector& area =
@@ -90,13 +109,6 @@ std::optional<Foam::depositSites::site> Foam::depositSites::find
         }
     }
 
-    // The deposit sits on the nearest wall of the model: on a wall that
-    // does not resuspend it stays (in a corner, a deposit on a plain stick
-    // wall is not the floor's)
-    if (nearest && !resuspends_[nearest->patchi])
-    {
-        return std::nullopt;
-    }
     return nearest;
 }
 
