@@ -589,39 +589,6 @@ void Foam::AdhesiveWallInteraction<CloudType>::countSurfaceContacts
 
 
 template<class CloudType>
-bool Foam::AdhesiveWallInteraction<CloudType>::rollsOn
-(
-    typename CloudType::parcelType& p,
-    const vector& nw,
-    const vector& Up,
-    const wallInteractionEntry& entry
-) const
-{
-    // A parcel the flow took off a wall, not yet out of the walls' reach:
-    // detachment is a rolling motion, not necessarily followed by
-    // entrainment (Ibrahim, Dunn & Brach 2003), so a capturing wall it
-    // touches does not capture it again; it keeps its motion along the
-    // wall (the part into the wall taken off) and the touch is no impact
-    using interaction = wallInteractionEntry::interaction;
-    if
-    (
-        detached_.empty()
-     || (entry.type() != interaction::adhesive && entry.type() != interaction::stick)
-     || !detached_.count({p.origProc(), p.origId()})
-    )
-    {
-        return false;
-    }
-    const scalar un = (p.U() - Up) & nw;
-    if (un > 0)
-    {
-        p.U() -= un*nw;
-    }
-    return true;
-}
-
-
-template<class CloudType>
 brachDunn::Fate Foam::AdhesiveWallInteraction<CloudType>::interact
 (
     typename CloudType::parcelType& p,

@@ -5,6 +5,8 @@
 
 #include "AdhesiveWallInteraction.H"
 
+#include <map>
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
@@ -271,6 +273,82 @@ void Foam::AdhesiveWallInteraction<CloudType>::updateDetached
             }
         }
     }
+    forgetGone();
+}
+
+
+template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::forgetGone()
+{
+    // Detached parcels no processor holds any more (escaped, removed):
+    // forgotten, so that the set (stored at write times) does not grow
+    // with every parcel ever resuspended. The set's order is the same on
+    // every processor
+    if (detached_.empty())
+    {
+        return;
+    }
+    std::map<std::pair<label, label>, label> index;
+    for (const auto& key : detached_)
+    {
+        index.emplace(key, label(index.size()));
+    }
+    labelList held(detached_.size(), 0);
+    for (const auto& p : this->owner())
+    {
+        const auto found = index.find({p.origProc(), p.origId()});
+        if (found != index.end())
+        {
+            held[found->second] = 1;
+        }
+    }
+    compat::maxOverProcessors(held);
+    for (const auto& [key, i] : index)
+    {
+        if (!held[i])
+        {
+            detached_.erase(key);
+        }
+    }
+}
+
+
+template<class CloudType>
+bool Foam::AdhesiveWallInteraction<CloudType>::rollsOn
+(
+    typename CloudType::parcelType& p,
+    const vector& nw,
+    const vector& Up,
+    const wallInteractionEntry& entry
+) const
+{
+    // A parcel the flow took off a wall, not yet out of the walls' reach:
+    // detachment is a rolling motion, not necessarily followed by
+    // entrainment (Ibrahim, Dunn & Brach 2003), so a resuspending wall it
+    // touches does not capture it again; it keeps its motion along the
+    // wall (the part into the wall taken off) and the touch is no impact.
+    // A capturing wall without resuspension captures it as any parcel
+    using interaction = wallInteractionEntry::interaction;
+    if
+    (
+        detached_.empty() || !entry.resuspension()
+     || (entry.type() != interaction::adhesive && entry.type() != interaction::stick)
+     || !detached_.count({p.origProc(), p.origId()})
+    )
+    {
+        return false;
+    }
+    // Left leaving the wall by a hair (1e-9 of the relative speed): along
+    // a face that is not aligned with the axes, a velocity along it to
+    // rounding may point into it, which the tracking takes as a hit at
+    // once, without progress, again and again
+    const scalar un = (p.U() - Up) & nw;
+    const scalar away = 1e-9*mag(p.U() - Up);
+    if (un > -away)
+    {
+        p.U() -= (un + away)*nw;
+    }
+    return true;
 }
 
 

@@ -304,11 +304,14 @@ template<class CloudType>
 bool Foam::AdhesiveWallSurfaceContact<CloudType>::wedged
 (
     const typename CloudType::parcelType& p,
-    const scalar fraction
+    const std::optional<brachDunn::Contact>& contact
 )
 {
+    // Contacts at the start of the sub-steps in a row, none without one
+    // between them (a parcel sliding along a wall touches it at the start
+    // of every other sub-step only)
     const labelPair parcel(p.origProc(), p.origId());
-    if (fraction > 0 || parcel != wedged_)
+    if (!contact || contact->fraction > 0 || parcel != wedged_)
     {
         wedged_ = parcel;
         wedgedContacts_ = 0;
@@ -437,7 +440,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::afterMove
     }
     const std::optional<brachDunn::Contact> contact =
         walls_->firstContact(p.cell(), position0, end, 0.5*p.d());
-    if (!contact || wedged(p, contact->fraction))
+    if (wedged(p, contact) || !contact)
     {
         return;
     }
