@@ -227,87 +227,66 @@ void Foam::AdhesiveWallInteraction<CloudType>::updateDetached
     const std::vector<std::pair<label, label>>& released
 )
 {
-    // This processor's changes: the parcels released, then those detached
-    // whose centre is farther than a diameter from every wall of the model
-    // (the parcel's cell's wall faces, and with contact at the surface the
-    // wall triangles within reach of it); known to every processor, as a
-    // parcel may cross to another
-    DynamicList<label> changes;
-    for (const auto& key : released)
-    {
-        changes.append(key.first);
-        changes.append(key.second);
-    }
+    // One pass over the parcels: the detached ones held here, and those of
+    // them out of reach (centre farther than a diameter from the model's
+    // walls as nearestWall sees them). Reduced over the processors (a
+    // parcel may cross; the set's order is the same on all): those out of
+    // reach and those none holds (escaped, removed) are forgotten, so that
+    // the set, stored at write times, does not grow without bound
     if (!detached_.empty())
     {
+        std::map<std::pair<label, label>, label> index;
+        for (const auto& key : detached_)
+        {
+            index.emplace(key, label(index.size()));
+        }
+        labelList held(detached_.size(), 0);
+        labelList away(detached_.size(), 0);
         const fvMesh& mesh = this->owner().mesh();
         for (const auto& p : this->owner())
         {
+            const auto found = index.find({p.origProc(), p.origId()});
+            if (found == index.end())
+            {
+                continue;
+            }
+            held[found->second] = 1;
             if
             (
                 compat::isActive(p)
-             && detached_.count({p.origProc(), p.origId()})
              && !sites_->nearestWall(p.cell(), compat::position(p, mesh), p.d())
             )
             {
-                changes.append(-1 - p.origProc());
-                changes.append(p.origId());
+                away[found->second] = 1;
+            }
+        }
+        compat::maxOverProcessors(held);
+        compat::maxOverProcessors(away);
+        for (const auto& [key, i] : index)
+        {
+            if (!held[i] || away[i])
+            {
+                detached_.erase(key);
             }
         }
     }
+
+    // Then the parcels released in this step, on every processor
+    DynamicList<label> mine(2*released.size());
+    for (const auto& key : released)
+    {
+        mine.append(key.first);
+        mine.append(key.second);
+    }
     List<labelList> all(Pstream::nProcs());
-    all[Pstream::myProcNo()] = changes;
+    all[Pstream::myProcNo()] = mine;
     Pstream::gatherList(all);
     Pstream::scatterList(all);
     for (const labelList& list : all)
     {
         for (label i = 0; i + 1 < list.size(); i += 2)
         {
-            if (list[i] >= 0)
-            {
-                detached_.insert({list[i], list[i + 1]});
-            }
-            else
-            {
-                detached_.erase({-1 - list[i], list[i + 1]});
-            }
-        }
-    }
-    forgetGone();
-}
-
-
-template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::forgetGone()
-{
-    // Detached parcels no processor holds any more (escaped, removed):
-    // forgotten, so that the set (stored at write times) does not grow
-    // with every parcel ever resuspended. The set's order is the same on
-    // every processor
-    if (detached_.empty())
-    {
-        return;
-    }
-    std::map<std::pair<label, label>, label> index;
-    for (const auto& key : detached_)
-    {
-        index.emplace(key, label(index.size()));
-    }
-    labelList held(detached_.size(), 0);
-    for (const auto& p : this->owner())
-    {
-        const auto found = index.find({p.origProc(), p.origId()});
-        if (found != index.end())
-        {
-            held[found->second] = 1;
-        }
-    }
-    compat::maxOverProcessors(held);
-    for (const auto& [key, i] : index)
-    {
-        if (!held[i])
-        {
-            detached_.erase(key);
+            detached_.insert({list[i], list[i + 1]});
         }
     }
 }
