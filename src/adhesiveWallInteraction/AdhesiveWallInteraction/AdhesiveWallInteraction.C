@@ -62,7 +62,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
     {
         if (impact.outcome == Fate::capture)
         {
-            deposits_->addCapture(pp.index(), facei, mass, nParticle, faceProc);
+            creditCapture(p, pp.index(), facei, faceProc, mass, nParticle);
         }
         else
         {

@@ -332,6 +332,37 @@ bool Foam::AdhesiveWallInteraction<CloudType>::rollsOn
 
 
 template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::creditCapture
+(
+    const typename CloudType::parcelType& p,
+    const label patchi,
+    const label facei,
+    const label faceProc,
+    const scalar mass,
+    const scalar nParticle
+)
+{
+    // A deposit that may leave is credited to its site, the face its
+    // release takes it off (depositSites::find, of the same position and
+    // cell: a deposit does not move): where faces tie (a parcel on the
+    // line where two meet) the face the tracking hit may be the other one
+    if (sites_)
+    {
+        const auto s = sites_->find
+        (
+            p.cell(), compat::position(p, this->owner().mesh()), p.d()
+        );
+        if (s)
+        {
+            deposits_->addCapture(s->patchi, s->facei, mass, nParticle, s->proc);
+            return;
+        }
+    }
+    deposits_->addCapture(patchi, facei, mass, nParticle, faceProc);
+}
+
+
+template<class CloudType>
 void Foam::AdhesiveWallInteraction<CloudType>::release
 (
     typename CloudType::parcelType& p,
