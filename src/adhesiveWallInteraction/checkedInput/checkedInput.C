@@ -443,32 +443,6 @@ Foam::dictionary Foam::checkedInput::subDictionary
 }
 
 
-void Foam::checkedInput::requireKnownKeywords
-(
-    const dictionary& dict,
-    const wordList& valid,
-    const std::string& what
-)
-{
-    for (const entry& e : dict)
-    {
-        if (std::find(valid.begin(), valid.end(), e.keyword()) == valid.end())
-        {
-            std::string names;
-            for (const word& keyword : valid)
-            {
-                names += ' ' + keyword;
-            }
-            fail
-            (
-                dict, e.keyword(), entryText(e),
-                "not a keyword of " + what + "; valid keywords:" + names
-            );
-        }
-    }
-}
-
-
 const Foam::dictionary& Foam::checkedInput::baseKeywordsChecked
 (
     const dictionary& subModels,
