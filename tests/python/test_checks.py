@@ -968,3 +968,15 @@ def test_surface_contacts(tmp_path, capsys):
     contacts.write_text(contacts.read_text().replace("2e-05", "3e-05"))
     with pytest.raises(CheckError, match="last times 2e-05 .* 3e-05"):
         checks.surface_contacts(stats, contacts)
+
+
+def test_argument_counts_follow_from_the_usage():
+    # words outside brackets are required, a quoted group is one argument,
+    # a word ending in ... takes any number
+    from adhesivewall.checks.registry import _argument_counts
+    assert _argument_counts("FILE COLUMN [PATCH [INJECTOR [DMIN]]]") == (2, 5)
+    assert _argument_counts("'X Y Z' 'X Y Z' RTOL") == (3, 3)
+    assert _argument_counts("REFERENCE RTOL 'COLUMN...' FILE...") == (4, checks.ANY)
+    assert _argument_counts("[CASE [TIME [CLOUD]]]") == (0, 3)
+    assert _argument_counts("FILE [COLUMN=TEXT...] [-sort COLUMN] COLUMN...") == (2, checks.ANY)
+    assert _argument_counts("") == (0, 0)
