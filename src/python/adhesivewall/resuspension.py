@@ -2,7 +2,7 @@
 """Resuspension of deposited spheres by a flow: an independent reference.
 
 The formulas of doc/resuspension.md written again in numpy, without the
-library's C++ (src/brachDunn/Resuspension), so that the tutorial
+library's C++ (src/brachDunn/resuspension/Resuspension), so that the tutorial
 channelResuspension judges the library against a second implementation:
 
     JKR adhesion          F_JKR = (3/2) pi w r,  a0^3 = 6 pi w r^2/K,
