@@ -22,7 +22,8 @@ import re
 import sys
 
 CODE_SPAN = re.compile(r"`([^`\n]+)`")
-WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+# (a word is not a number's exponent or a word's tail: `1e-3` names no e)
+WORD = re.compile(r"(?<![\w.+-])[A-Za-z_][A-Za-z0-9_]*")
 
 
 def recorded(folder):
@@ -44,7 +45,7 @@ def documented(guide):
     for page in sorted(pathlib.Path(guide).glob("*.md")):
         fenced = False
         for line in page.read_text().splitlines():
-            if line.startswith("```"):
+            if line.lstrip().startswith("```"):
                 fenced = not fenced
             elif not fenced:
                 for span in CODE_SPAN.findall(line):

@@ -32,11 +32,15 @@ def test_only_inline_code_of_prose_documents(tmp_path):
     guide.mkdir()
     write(guide / "a.md", "Give `meanFreePath 66.5e-9;` or `p`.\n"
                           "```\nslipCoefficients Davies;\n```\n"
-                          "The word maxDiameter without backticks.\n")
+                          "The word maxDiameter without backticks.\n"
+                          "- a list:\n  ```\n  `seed 1;`\n  ```\n")
     words = keywords.documented(guide)
     assert {"meanFreePath", "p"} <= words
     assert "slipCoefficients" not in words
     assert "maxDiameter" not in words
+    # an exponent is no keyword; an indented fence is a fence
+    assert "e" not in words
+    assert "seed" not in words
 
 
 def test_undocumented_named_and_exit_codes(tmp_path, capsys, monkeypatch):

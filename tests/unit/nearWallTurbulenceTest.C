@@ -67,7 +67,7 @@ TEST(NearWallTurbulence, FitsHaveTheWallsLimits)
 TEST(NearWallTurbulence, WallNormalRmsIsTheDNSs)
 {
     // v'+ of Moser, Kim & Mansour (1999), Re_tau 392.24: sqrt of R_vv
-    // interpolated linearly in y/h at y+/392.24 (the fits are 15-30 %
+    // interpolated linearly in y/h at y+/392.24 (the fits are 10-32 %
     // above their Re_tau 178 values: doc/turbulentDispersion.md)
     const double yPlus[] = {1, 5, 10, 30, 100};
     const double dns[] = {0.01003, 0.1448, 0.3492, 0.8357, 0.9738};

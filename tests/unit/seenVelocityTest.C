@@ -1,12 +1,13 @@
 // adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 // The fluid velocity seen (SeenVelocity): the wall's frame is right-handed
 // and orthonormal with s along the mean flow's part parallel to the wall;
-// the step's mean and variance equal the closed forms of the
-// Ornstein-Uhlenbeck process with constant drift (evaluated here from the
-// stochastic differential equation's solution, not the code's
-// arrangement), two half steps compose into one (Chapman-Kolmogorov), the
-// stationary law N(a T/(1 + St), 1) is kept, and a Monte Carlo sample of
-// one step has the closed forms' mean and variance.
+// the step's mean and variance equal the textbook solution of the
+// Ornstein-Uhlenbeck process with constant drift (the same formula as the
+// code's, so this checks the transcription and the components' wiring);
+// the independent checks are the composition of two half steps into one
+// (Chapman-Kolmogorov) and the stationary law N(a T/(1 + St), 1), kept by
+// a step of any length in a Monte Carlo sample (which also checks the
+// factor 1/(1 + St) on its own).
 
 #include "SeenVelocity.H"
 #include "inputErrorAssertions.H"
