@@ -22,18 +22,16 @@ namespace
 template<class Call>
 bool stops(Call call)
 {
-    const bool throwing = Foam::FatalError.throwExceptions(true);
-    bool stopped = false;
     try
     {
+        const Foam::compat::fatalErrorsThrow throwing;
         call();
     }
     catch (const Foam::error&)
     {
-        stopped = true;
+        return true;
     }
-    Foam::FatalError.throwExceptions(throwing);
-    return stopped;
+    return false;
 }
 
 } // End namespace

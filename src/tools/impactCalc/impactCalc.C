@@ -48,6 +48,7 @@ Usage
 #include "argList.H"
 #include "caseWallModel.H"
 #include "diagnostics.H"
+#include "impactCalcOptions.H"
 #include "gnuplot.H"
 #include "mathematicalConstants.H"
 
@@ -247,52 +248,6 @@ void criticalSpeeds
     }
 }
 
-//- Options that belong to another one
-const std::pair<const char*, const char*> belongsTo[] =
-{
-    {"measured", "diagnostics"},
-    {"lifshitz", "diagnostics"},
-    {"separation", "diagnostics"},
-    {"humidity", "diagnostics"},
-    {"charge", "diagnostics"},
-    {"potential", "diagnostics"},
-    {"criticalMethod", "critical"},
-};
-
-//- Options that exclude each other, and why
-const std::tuple<const char*, const char*, const char*> excludes[] =
-{
-    {"critical", "diagnostics", "-critical takes -diameters and -angles"},
-    {"critical", "speeds", "-critical takes -diameters and -angles"},
-    {"plot", "diagnostics", "-diagnostics has nothing to plot"},
-};
-
-
-//- Stop at an option given without the one it belongs to, or beside one
-//  it excludes
-void checkOptionConflicts(const argList& args)
-{
-    for (const auto& [option, owner] : belongsTo)
-    {
-        if (tools::found(args, option) && !tools::found(args, owner))
-        {
-            FatalErrorInFunction
-                << "Option -" << option << " belongs to -" << owner << nl
-                << exit(FatalError);
-        }
-    }
-    for (const auto& [option, other, why] : excludes)
-    {
-        if (tools::found(args, option) && tools::found(args, other))
-        {
-            FatalErrorInFunction
-                << "Options -" << option << " and -" << other
-                << " exclude each other: " << why << nl << exit(FatalError);
-        }
-    }
-}
-
-
 //- The stream the CSV goes to (-output FILE, else standard output), with
 //  the precision asked for
 std::ostream& output(const argList& args, std::unique_ptr<std::ofstream>& file)
@@ -335,44 +290,6 @@ const wallInteractionEntry& adhesiveEntry
             << exit(FatalError);
     }
     return entry;
-}
-
-
-void addOptions()
-{
-    argList::addNote
-    (
-        "Impacts of an adhesiveWallInteraction patch entry over diameters,"
-        " speeds and angles; critical speeds; one impact in detail.\n"
-        "Sweep columns: diameter [m], speed [m/s], angle [deg from the wall"
-        " normal], un, ut [m/s: normal and tangential incoming speed], R [-:"
-        " coefficient of restitution], gamma [J/m^2: surface energy], WA [J:"
-        " work of adhesion, <= 0], captured [0 or 1], unOut, utOut [m/s:"
-        " rebound speeds, 0 when captured], energyLoss [J].\n"
-        "-critical columns: diameter [m], angle [deg], criticalSpeed,"
-        " criticalNormalSpeed [m/s] (0: never captured, inf: always).\n"
-        "Example: impactCalc -patch walls -diameters 4.9e-6"
-        " -speeds \"(0.5 1 2 5)\" -angles \"(0 30)\""
-    );
-    tools::addCaseOptions("patch whose entry applies");
-    argList::addOption("diameters", "list", "particle diameters [m]: 5e-6 or \"(...)\"");
-    argList::addOption("speeds", "list", "incoming speeds [m/s]: 1 or \"(...)\"");
-    argList::addOption("angles", "list", "angles from the normal [deg] (0)");
-    argList::addBoolOption("critical", "critical speeds instead");
-    argList::addOption
-    (
-        "criticalMethod", "name", "consistent (default) or paper (Eq. 26)"
-    );
-    argList::addBoolOption("diagnostics", "one impact in detail");
-    argList::addOption("measured", "value", "measured rebound speed [m/s]");
-    argList::addOption("lifshitz", "value", "h for the force review [J]");
-    argList::addOption("separation", "value", "z for the force review [m]");
-    argList::addOption("humidity", "value", "relative humidity [%]");
-    argList::addOption("charge", "value", "particle charge [C]");
-    argList::addOption("potential", "value", "contact potential [V]");
-    argList::addOption("output", "file", "write the CSV to this file");
-    argList::addOption("precision", "digits", "significant digits (10)");
-    argList::addOption("plot", "file.png", "plot with gnuplot");
 }
 
 

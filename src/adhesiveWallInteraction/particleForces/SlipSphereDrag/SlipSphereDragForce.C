@@ -59,8 +59,17 @@ Foam::SlipSphereDragForce<CloudType>::SlipSphereDragForce
         );
     }
 
-    // What it will do, in the log (as the model prints its settings),
-    // numbers in their shortest exact form
+    Info<< "    slipSphereDrag: " << describe().c_str() << endl;
+    checkOnlyDrag(owner);
+}
+
+
+template<class CloudType>
+std::string Foam::SlipSphereDragForce<CloudType>::describe() const
+{
+    // (as the model prints its settings, numbers in their shortest exact
+    // form)
+    const dictionary& coeffs = this->coeffs();
     using aerosolForces::text;
     std::string settings =
         (
@@ -89,8 +98,16 @@ Foam::SlipSphereDragForce<CloudType>::SlipSphereDragForce
           + ", molar mass " + text(meanFreePath_.molarMass)
           + " kg/mol and the carrier's viscosity";
     }
-    Info<< "    slipSphereDrag: " << settings.c_str() << endl;
+    return settings;
+}
 
+
+template<class CloudType>
+void Foam::SlipSphereDragForce<CloudType>::checkOnlyDrag
+(
+    const CloudType& owner
+)
+{
     // It is the drag: another drag law beside it (sphereDrag left in when
     // switching) would double the drag and halve exactBrownianMotion's
     // diffusivity kT/Sp, with nothing in the log (OpenFOAM's drag forces

@@ -357,37 +357,11 @@ def angle_rows(fibre, case="."):
     return rows
 
 
-def headline(results, mpps, fibre):
-    lines = ["", "fibreFilter: single-fibre efficiency, d_f = %g um, solidity"
-             " %g, 2D fibre row; slip and Brownian motion (%g K)" % (
-                 fibre.dFibre * 1e6, fibre.alpha, fibre.T),
-             "eta +- binomial standard error (parcels: results.csv); "
-             "correlations, Kuwabara flow: eta_D Stechkina & Fuchs,",
-             "eta_R Lee & Liu, eta_DR and eta_I Stechkina, Kirsch & Fuchs; "
-             "sum = eta_D + eta_R + eta_DR + eta_I", "",
-             "%-5s %-6s %-9s %-6s %-8s %-19s %-19s %-8s %-8s %-8s %-8s %s" % (
-                 "U0", "d [um]", "Stk", "R", "Pe", "stick", "adhesive",
-                 "eta_D", "eta_R", "eta_DR", "eta_I", "sum")]
-    keys = list(dict.fromkeys(zip(results.text("U0"), results.text("d"))))
-    for U, d in keys:
-        of = {cloud: results.where(U0=U, d=d, model=cloud)
-              for cloud in CLOUDS}
-        row = of["stick"]
-
-        def cell(name):
-            text = row.text(name)[0]
-            return "%-8.3g" % float(text) if text else "%-8s" % "-"
-
-        def eta(cloud):
-            return "%.4g +- %.2g" % (of[cloud]["eta"][0],
-                                     of[cloud]["etaSE"][0])
-        lines.append(("%-5s %-6.3g %-9.3g %-6.3g %-8.3g %-19s %-19s "
-                      "%s %s %s %s %s" % (
-                          U, float(d) * 1e6, row["Stk"][0], row["R"][0],
-                          row["Pe"][0], eta("stick"), eta("adhesive"),
-                          cell("etaD"), cell("etaR"), cell("etaDR"),
-                          cell("etaI"), cell("etaSum"))).rstrip())
-    lines += ["", "(eta_I, sum: '-' where R >= 0.4, beyond the impaction fit)"]
+def headline_notes(results, mpps, fibre):
+    """The headline's notes: bands that may cut off captures, fibre
+    Reynolds numbers beyond the correlations', the most penetrating
+    sizes."""
+    lines = []
     # A band that may cut off captures (the tutorial's test: at most
     # max(2, 10 %) of them in its outer half, where the band is not the
     # whole period and the correlations hold)
@@ -424,107 +398,46 @@ def headline(results, mpps, fibre):
                      "+- %.2g; Lee & Liu (1980): %.3g um, %.3g (ratios %.2f, "
                      "%.2f)" % (U, model, d * 1e6, eta, se, dLL * 1e6, etaLL,
                                 d / dLL, eta / etaLL))
+    return lines
+
+
+def headline(results, mpps, fibre):
+    lines = ["", "fibreFilter: single-fibre efficiency, d_f = %g um, solidity"
+             " %g, 2D fibre row; slip and Brownian motion (%g K)" % (
+                 fibre.dFibre * 1e6, fibre.alpha, fibre.T),
+             "eta +- binomial standard error (parcels: results.csv); "
+             "correlations, Kuwabara flow: eta_D Stechkina & Fuchs,",
+             "eta_R Lee & Liu, eta_DR and eta_I Stechkina, Kirsch & Fuchs; "
+             "sum = eta_D + eta_R + eta_DR + eta_I", "",
+             "%-5s %-6s %-9s %-6s %-8s %-19s %-19s %-8s %-8s %-8s %-8s %s" % (
+                 "U0", "d [um]", "Stk", "R", "Pe", "stick", "adhesive",
+                 "eta_D", "eta_R", "eta_DR", "eta_I", "sum")]
+    keys = list(dict.fromkeys(zip(results.text("U0"), results.text("d"))))
+    for U, d in keys:
+        of = {cloud: results.where(U0=U, d=d, model=cloud)
+              for cloud in CLOUDS}
+        row = of["stick"]
+
+        def cell(name):
+            text = row.text(name)[0]
+            return "%-8.3g" % float(text) if text else "%-8s" % "-"
+
+        def eta(cloud):
+            return "%.4g +- %.2g" % (of[cloud]["eta"][0],
+                                     of[cloud]["etaSE"][0])
+        lines.append(("%-5s %-6.3g %-9.3g %-6.3g %-8.3g %-19s %-19s "
+                      "%s %s %s %s %s" % (
+                          U, float(d) * 1e6, row["Stk"][0], row["R"][0],
+                          row["Pe"][0], eta("stick"), eta("adhesive"),
+                          cell("etaD"), cell("etaR"), cell("etaDR"),
+                          cell("etaI"), cell("etaSum"))).rstrip())
+    lines += ["", "(eta_I, sum: '-' where R >= 0.4, beyond the impaction fit)"]
+    lines += headline_notes(results, mpps, fibre)
     lines += ["", "parcels still airborne at the end: stick %d, adhesive %d"
               % tuple(results.where(model=c).sum("airborne") for c in CLOUDS),
               "", "Results: results.csv, mpps.csv, correlation.csv, "
               "angles.csv; plots: efficiency.png, spectrum.png, angles.png"]
     return lines
-
-
-def plot_efficiency(path, results, correlation, fibre):
-    """eta against Stk, 1-10 um, per face velocity, with the correlations'
-    sum where the impaction fit holds and the sum is at most 1."""
-    from .. import plots
-    fig, ax = plots.figure(10, 6.5)
-    for c, U in enumerate(results.unique("U0")):
-        colour = "C%d" % c
-        for cloud, style in (("stick", "o-"), ("adhesive", "o--")):
-            rows = results.where(U0=U, model=cloud, d=lambda d: float(d)
-                                 >= 1e-6)
-            ax.errorbar(rows["Stk"], rows["eta"], yerr=rows["etaSE"],
-                        fmt=style, color=colour, capsize=3,
-                        mfc=colour if cloud == "stick" else "none",
-                        label=f"{U} m/s {cloud}")
-        curve = correlation.where(
-            U0=U, d=lambda d: float(d) >= 0.8e-6,
-            etaSum=lambda e: e != "" and 0 <= float(e) <= 1)
-        ax.plot(curve["Stk"], curve["etaSum"], ":", color=colour, lw=2,
-                label=f"{U} m/s correlations")
-    plots.axes(ax, "Stokes number Stk = rho_p Cc d^2 U_0 / (18 mu d_f)",
-               "single-fibre efficiency",
-               "fibre %g um, solidity %g, 1-10 um; solid: stick, dashed: "
-               "adhesive, dotted: Kuwabara-flow sum"
-               % (fibre.dFibre * 1e6, fibre.alpha),
-               xlim=(0.01, 60), ylim=(0, 1.6), xlog=True)
-    ax.legend(loc="center left", bbox_to_anchor=(1, 0.5))
-    plots.save(fig, path)
-
-
-def plot_spectrum(path, results, correlation, mpps, fibre):
-    """eta against d (log-log) at each face velocity of the spectrum: the
-    simulation, stick and adhesive, +- standard error; each mechanism's
-    correlation and their sum; the most penetrating size found and Lee &
-    Liu's."""
-    from .. import plots
-    velocities = spectrum_velocities(results)
-    fig, axes = plots.figure(11, 6.5 * len(velocities), rows=len(velocities))
-    for ax, U in zip([axes] if len(velocities) == 1 else axes, velocities):
-        curve = correlation.where(U0=U)
-        d = curve["d"] * 1e6
-        for name, style, label in (
-                ("etaD", "C0--", "diffusion, Stechkina & Fuchs (1966)"),
-                ("etaDLL", "C0:", "diffusion, Lee & Liu (1982)"),
-                ("etaR", "C2--", "interception, Lee & Liu (1982)"),
-                ("etaDR", "C4--",
-                 "diffusion-interception, Stechkina et al. (1969)")):
-            ax.plot(d, curve[name], style, lw=1.5, label=label)
-        valid = curve.where(etaI=lambda e: e != "" and float(e) > 0)
-        ax.plot(valid["d"] * 1e6, valid["etaI"], "C1--", lw=1.5,
-                label="impaction, Stechkina et al. (1969), R < 0.4")
-        ax.plot(valid["d"] * 1e6, valid["etaSum"], "k-", lw=2,
-                label="sum of the four")
-        for cloud, style in (("stick", "o"), ("adhesive", "s")):
-            rows = results.where(U0=U, model=cloud)
-            ax.errorbar(rows["d"] * 1e6, rows["eta"], yerr=rows["etaSE"],
-                        fmt=style, color="C3", capsize=3, ms=7 if cloud ==
-                        "adhesive" else 5, mfc="C3" if cloud == "stick" else
-                        "none", label=f"simulation, {cloud} walls")
-        m = mpps.where(U0=U)
-        if len(m):
-            ax.plot(m["dLeeLiu"] * 1e6, m["etaLeeLiu"], "k*", ms=14,
-                    label="MPPS, Lee & Liu (1980)")
-            ax.plot(m["d"] * 1e6, m["eta"], "*", color="C3", ms=14, mfc="none",
-                    label="MPPS found")
-        ax.set_yscale("log")
-        plots.axes(ax, "particle diameter [um]", "single-fibre efficiency",
-                   "fibre %g um, solidity %g, %s m/s: slip and Brownian "
-                   "motion on" % (fibre.dFibre * 1e6, fibre.alpha, U),
-                   xlim=(0.01, 12), ylim=(3e-4, 3), xlog=True)
-        ax.legend(loc="upper center", fontsize=8, ncol=2)
-    plots.save(fig, path)
-
-
-def plot_angles(path, angles):
-    from .. import plots
-    subs = angles.unique("case")
-    fig, axes = plots.figure(10, 7.5, rows=2, columns=2)
-    for ax, sub in zip(axes, subs):
-        for shift, cloud in ((-2.5, "stick"), (2.5, "adhesive")):
-            rows = angles.where(case=sub, model=cloud)
-            ax.bar(rows["angle"] + shift, rows["captured"], width=5,
-                   alpha=0.7, edgecolor="k", label=cloud)
-        row = angles.where(case=sub)
-        ax.set_title("U_0 %s m/s, d %g um, Stk %s" % (
-            row.text("U0")[0], row["d"][0] * 1e6, row.text("Stk")[0]))
-        ax.set_xlim(0, 180)
-        ax.set_xticks(range(0, 181, 30))
-        ax.set_xlabel("angle from the upstream stagnation point [deg]")
-        ax.set_ylabel("captured parcels per 10 deg")
-        ax.legend(loc="upper right")
-    for ax in axes[len(subs):]:
-        ax.set_visible(False)
-    fig.suptitle("Where the fibre captures (parcels per case: results.csv)")
-    plots.save(fig, path)
 
 
 def run(case="."):
@@ -555,6 +468,7 @@ def run(case="."):
     correlation = tables.read("correlation.csv")
     tables.write_csv("angles.csv", ["case", "U0", "d", "Stk", "model",
                                     "angle", "captured"], angle_rows(fibre))
+    from .fibre_filter_plots import plot_angles, plot_efficiency, plot_spectrum
     lines = headline(results, mpps, fibre)
     with open("log.table", "w") as f:
         f.write("\n".join(lines) + "\n")
