@@ -77,16 +77,12 @@ void Foam::AdhesiveWallInteraction<CloudType>::resuspend()
 {
     const fvMesh& mesh = this->owner().mesh();
     const Time& time = mesh.time();
-    const scalar dt = time.deltaTValue();
     // The per-step draws: counter = a hash of the step's time name (its
     // index would repeat in a continuation from a time folder without
     // uniform/time, which starts the index again; its value's last bits
     // differ between a straight run, which sums the steps, and a restart,
     // which reads the folder's name; the name is the same in both, and a
-    // case never repeats it); the adhesion's counter is 0. The key's high
-    // bits set apart these streams from other users of (seed, origProc,
-    // origId) (exactBrownianMotion)
-    constexpr std::uint64_t stream = std::uint64_t(1) << 62;
+    // case never repeats it); the adhesion's counter is 0 (leaves)
     const std::uint64_t step =
         std::max(brachDunn::textCounter(compat::timeName(time)), std::uint64_t(1));
 
@@ -116,50 +112,12 @@ void Foam::AdhesiveWallInteraction<CloudType>::resuspend()
         {
             continue;
         }
-        const resuspensionSettings& settings =
-            *coeffs_.entries().entryOf(s->patchi)->resuspension();
         const depositSites::flow& flow = sites_->flowAt(*s);
         const scalar uStar = Foam::sqrt(flow.tauW/flow.rho);
         ++tested[s->patchi];
         uStarMin[s->patchi] = min(uStarMin[s->patchi], uStar);
         uStarMax[s->patchi] = max(uStarMax[s->patchi], uStar);
-        const std::uint64_t key1 = std::uint64_t(p.origProc()) | stream;
-        const std::uint64_t key2 = std::uint64_t(p.origId());
-        const scalar r = 0.5*p.d();
-
-        scalar leaving = 0;
-        try
-        {
-            const scalar fPrime = settings.model.reducedAdhesion
-            (
-                r,
-                brachDunn::uniformFromBits
-                (
-                    brachDunn::randomBits(settings.seed, key1, key2, 0)
-                )
-            );
-            leaving = settings.model.leavingProbability
-            (
-                r, fPrime, flow.tauW, flow.rho, flow.nu, dt
-            );
-        }
-        catch (const brachDunn::InputError& err)
-        {
-            FatalErrorInFunction
-                << "Deposit at " << position << " on patch "
-                << compat::boundaryMesh(mesh)[s->patchi].name()
-                << " (resuspension): " << err.what() << exit(FatalError);
-        }
-        const bool leaves =
-            leaving >= 1
-         || (
-                leaving > 0
-             && brachDunn::uniformFromBits
-                (
-                    brachDunn::randomBits(settings.seed, key1, key2, step)
-                ) < leaving
-            );
-        if (leaves)
+        if (leaves(p, position, *s, flow, step))
         {
             release(p, position, *s, uStar);
             released.push_back({p.origProc(), p.origId()});
@@ -169,6 +127,62 @@ void Foam::AdhesiveWallInteraction<CloudType>::resuspend()
     updateDetached(released);
 
     logResuspension(tested, uStarMin, uStarMax);
+}
+
+
+template<class CloudType>
+bool Foam::AdhesiveWallInteraction<CloudType>::leaves
+(
+    const typename CloudType::parcelType& p,
+    const point& position,
+    const depositSites::site& s,
+    const depositSites::flow& flow,
+    const std::uint64_t step
+) const
+{
+    // The parcel's adhesion draw (counter 0) and its step's draw (the
+    // step's counter); the key's high bits set apart these streams from
+    // other users of (seed, origProc, origId) (exactBrownianMotion)
+    constexpr std::uint64_t stream = std::uint64_t(1) << 62;
+    const resuspensionSettings& settings =
+        *coeffs_.entries().entryOf(s.patchi)->resuspension();
+    const scalar dt = this->owner().mesh().time().deltaTValue();
+    const std::uint64_t key1 = std::uint64_t(p.origProc()) | stream;
+    const std::uint64_t key2 = std::uint64_t(p.origId());
+    const scalar r = 0.5*p.d();
+
+    scalar leaving = 0;
+    try
+    {
+        const scalar fPrime = settings.model.reducedAdhesion
+        (
+            r,
+            brachDunn::uniformFromBits
+            (
+                brachDunn::randomBits(settings.seed, key1, key2, 0)
+            )
+        );
+        leaving = settings.model.leavingProbability
+        (
+            r, fPrime, flow.tauW, flow.rho, flow.nu, dt
+        );
+    }
+    catch (const brachDunn::InputError& err)
+    {
+        FatalErrorInFunction
+            << "Deposit at " << position << " on patch "
+            << compat::boundaryMesh(this->owner().mesh())[s.patchi].name()
+            << " (resuspension): " << err.what() << exit(FatalError);
+    }
+    return
+        leaving >= 1
+     || (
+            leaving > 0
+         && brachDunn::uniformFromBits
+            (
+                brachDunn::randomBits(settings.seed, key1, key2, step)
+            ) < leaving
+        );
 }
 
 
