@@ -1,11 +1,7 @@
 // adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
 #include "AdhesiveWallInteraction.H"
-#include "mathematicalConstants.H"
-#include "OSspecific.H"
+#include "parcelImpacts.H"
 #include "wallPolyPatch.H"
-#include "CounterRandom.H"
-
-#include <algorithm>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -20,291 +16,79 @@ Foam::fileName Foam::AdhesiveWallInteraction<CloudType>::outputDir() const
 }
 
 
+
 template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::count
+void Foam::AdhesiveWallInteraction<CloudType>::interact
 (
-    const typename CloudType::parcelType& p,
+    parcelType& p,
     const polyPatch& pp,
     const label facei,
     const label faceProc,
-    const wallImpact& impact
+    const vector& nw,
+    const vector& Up,
+    const wallInteractionEntry& entry,
+    const wallEvent::contact via,
+    bool& keepParticle
 )
 {
     using brachDunn::Fate;
 
-    const scalar nParticle = p.nParticle();
-    const scalar mass = nParticle*p.mass();
-    statistics_.add
-    (
-        statistics_.rowOf(pp.index(), compat::parcelInjectorId(p), p.d()),
-        impact.outcome,
-        nParticle,
-        mass,
-        Foam::sqrt(sqr(impact.un) + sqr(impact.ut)),
-        Foam::atan2(impact.ut, impact.un)*180/constant::mathematical::pi
-    );
-
-    if (grade_)
-    {
-        grade_->fated
-        (
-            gradeGroup(p),
-            impact.outcome, nParticle, mass, p.origProc(), p.origId()
-        );
-    }
-
-    if (sites_ && impact.outcome == Fate::capture)
-    {
-        capturedThisStep_.insert({p.origProc(), p.origId()});
-    }
-
-    if (deposits_ && impact.outcome != Fate::rebound)
-    {
-        if (impact.outcome == Fate::capture)
-        {
-            creditCapture(p, pp.index(), facei, faceProc, mass, nParticle);
-        }
-        else
-        {
-            deposits_->addEscape(pp.index(), facei, mass, faceProc);
-        }
-    }
-
-    if (records_ && records_->active())
-    {
-        const Time& time = this->owner().mesh().time();
-        const point position = compat::position(p, this->owner().mesh());
-        records_->add
-        ({
-            time.value() - (1 - p.stepFraction())*time.deltaTValue(),
-            scalar(pp.index()), scalar(facei),
-            position.x(), position.y(), position.z(),
-            p.d(), nParticle, impact.un, impact.ut, scalar(impact.outcome),
-            impact.R, impact.WA, impact.unOut, impact.utOut
-        });
-    }
-}
-
-
-template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::checkSurfaceContactPlace() const
-{
-    // A cloudFunctions block in subModels is never read: the run would go
-    // on with contact at the centre, and only missing log lines tell
-    const entry* functions = compat::findEntry
-    (
-        this->owner().subModelProperties(), "cloudFunctions"
-    );
-    if (!functions || !functions->isDict())
+    keepParticle = true;
+    if (resuspension_ && resuspension_->rollsOn(p, pp.index(), nw, Up))
     {
         return;
     }
-    for (const entry& function : functions->dict())
-    {
-        if (wallInteractionCloud::isSurfaceContact(function))
-        {
-            checkedInput::fail
-            (
-                functions->dict(), function.keyword(),
-                "{ type " + wallInteractionCloud::surfaceContactType
-              + "; ... }",
-                "a cloud function in subModels, where OpenFOAM does not read"
-                " cloudFunctions: move the cloudFunctions block to the top"
-                " level of the cloud's properties"
-            );
-        }
-    }
-}
 
-
-template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::restore()
-{
-    // Totals of earlier runs, and the parcels the case started with
-    forAll(statistics_.patchNames(), patch)
+    vector omega = Zero;
+    if constexpr (wallInteractionCloud::isColliding<parcelType>::value)
     {
-        stringList stored;
-        this->getModelProperty(statistics_.patchNames()[patch], stored);
-        statistics_.restore(patch, stored);
+        omega = p.omega();
     }
-    if (grade_)
+    wallImpact impact;
+    try
     {
-        stringList stored;
-        this->getModelProperty("gradeEfficiency", stored);
-        grade_->restore(stored);
+        impact = entry.impact(p.d(), p.rho(), p.U() - Up, nw, omega);
     }
-    string initial;
-    this->getModelProperty("initialMass", initial);
-    compat::broadcast(initial);
-    balance_.restore(initial);
-    labelList detached;
-    this->getModelProperty("detached", detached);
-    compat::broadcast(detached);
-    for (label i = 0; i + 1 < detached.size(); i += 2)
-    {
-        detached_.insert({detached[i], detached[i + 1]});
-    }
-
-    // The deposit fields must hold what the stored totals count
-    const List<fateStatistics::row> totals(statistics_.totals());
-    const scalar deposited =
-        fateStatistics::parcels(totals, brachDunn::Fate::capture)
-      + fateStatistics::parcels(totals, brachDunn::Fate::escape);
-    if (deposits_ && deposited > 0 && deposits_->missing().size())
+    catch (const brachDunn::InputError& err)
     {
         FatalErrorInFunction
-            << "Fields " << deposits_->missing() << " are missing at time "
-            << compat::timeName(this->owner().mesh().time()) << ", where the"
-            << " stored statistics of cloud " << this->owner().name()
-            << " count " << deposited << " parcels captured or escaped"
-            << " since the start of the case: started from zero the fields"
-            << " would disagree with them. Restore the fields of this time"
-            << " (or restart from a time that has them), or set writeFields"
-            << " no" << exit(FatalError);
+            << "Parcel at " << compat::position(p, this->owner().mesh())
+            << " on patch " << pp.name() << ": " << err.what() << nl
+            << exit(FatalError);
     }
-}
-
-
-template<class CloudType>
-bool Foam::AdhesiveWallInteraction<CloudType>::apply
-(
-    typename CloudType::parcelType& p,
-    const wallImpact& impact,
-    const bool adhesive
-) const
-{
-    constexpr bool colliding =
-        wallInteractionCloud::isColliding<typename CloudType::parcelType>::value;
-
-    if (impact.outcome == brachDunn::Fate::rebound)
+    if (impact.outcome == Fate::notApproaching)
     {
-        compat::setActive(p, true);
-        p.U() = impact.U;
-        if constexpr (colliding)
-        {
-            // Rebound entries leave the spin, as standardWallInteraction
-            if (adhesive)
-            {
-                p.angularMomentum() = p.momentOfInertia()*impact.omega;
-            }
-        }
-        return true;
+        return;
     }
-
-    // Captured or escaped
-    compat::setActive(p, false);
-    p.U() = Zero;
-    if constexpr (colliding)
-    {
-        p.angularMomentum() = Zero;
-    }
-    return
-        impact.outcome == brachDunn::Fate::capture
-     && !coeffs_.removeCaptured();
-}
-
-
-template<class CloudType>
-Foam::label Foam::AdhesiveWallInteraction<CloudType>::gradeGroup
-(
-    const typename CloudType::parcelType& p
-) const
-{
-    return grade_->groups().of
+    impact.U += Up;
+    keepParticle = wallInteractionCloud::applyImpact
     (
-        compat::parcelInjectorId(p), wallInteractionCloud::classDiameter(p)
+        p, impact, entry.type() == wallInteractionEntry::interaction::adhesive,
+        coeffs_.removeCaptured()
     );
-}
 
-
-template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::updateGradeEfficiency()
-{
-    List<gradeEfficiency::parcel> parcels(this->owner().size());
-    label i = 0;
-    for (const auto& p : this->owner())
+    wallEvent e = wallInteractionCloud::impactEvent
+    (
+        p, this->owner().mesh(), pp, facei, faceProc, impact, via
+    );
+    if (resuspension_ && impact.outcome == Fate::capture)
     {
-        parcels[i++] =
+        resuspension_->captured(p);
+        if (const auto site = resuspension_->siteOf(p))
         {
-            gradeGroup(p),
-            p.origProc(), p.origId(), compat::isActive(p), p.nParticle(),
-            p.nParticle()*p.mass()
-        };
-    }
-    grade_->update(parcels);
-    if (gradeFile_)
-    {
-        grade_->write(*gradeFile_, compat::timeName(this->owner().mesh().time()));
-    }
-}
-
-
-template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::printSettings() const
-{
-    const std::vector<std::string>* warningLists[] =
-    {
-        &coeffs_.entries().warnings(), coeffs_.magnitudes().warnings.get()
-    };
-    for (const auto* warnings : warningLists)
-    {
-        for (const std::string& warning : *warnings)
-        {
-            WarningInFunction << warning.c_str() << endl;
+            e.depositPatch = site->patchi;
+            e.depositFace = site->facei;
+            e.depositProc = site->proc;
         }
     }
-    if (coeffs_.particle())
-    {
-        const auto& particle = *coeffs_.particle();
-        Info<< "    particle: E " << particle.material.E << " nu "
-            << particle.material.nu << " (" << particle.origin.c_str() << ")"
-            << nl;
-    }
-    for (const wallInteractionEntry& entry : coeffs_.entries().entries())
-    {
-        Info<< "    " << entry.describe().c_str() << nl;
-    }
-
-}
-
-
-template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::openFiles
-(
-    const word& cloudName
-)
-{
-    filesDir_ = outputDir();
-    const bool files = coeffs_.writeToFile() || coeffs_.maxImpactRecords() > 0;
-    if (files && Pstream::master())
-    {
-        mkDir(outputDir());
-    }
-    if (coeffs_.maxImpactRecords() > 0)
-    {
-        records_ = std::make_shared<impactRecords>
-        (
-            outputDir()/"impacts.csv",
-            coeffs_.maxImpactRecords(),
-            coeffs_.entries().patchNames(),
-            coeffs_.recordedPatches()
-        );
-    }
-    if (coeffs_.writeToFile() && Pstream::master())
-    {
-        statisticsFile_ = std::make_shared<OFstream>(outputDir()/"statistics.dat");
-        statistics_.writeHeader(*statisticsFile_, cloudName);
-        balance_.writeTo(outputDir()/"massBalance.dat", cloudName);
-        gradeFile_ = std::make_shared<OFstream>(outputDir()/"gradeEfficiency.dat");
-        grade_->writeHeader(*gradeFile_, cloudName);
-    }
+    outputs_->add(e);
 }
 
 
 template<class CloudType>
 bool Foam::AdhesiveWallInteraction<CloudType>::declined
 (
-    const typename CloudType::parcelType& p,
+    const parcelType& p,
     const polyPatch& pp,
     const wallInteractionEntry& entry
 )
@@ -320,23 +104,21 @@ bool Foam::AdhesiveWallInteraction<CloudType>::declined
             << " off the wall. Give walls an adhesive, rebound, stick or"
             << " escape entry" << exit(FatalError);
     }
-    if (grade_)
-    {
-        // OpenFOAM removes it: a system escape
-        grade_->leaving
-        (
-            gradeGroup(p), p.nParticle(), p.nParticle()*p.mass(),
-            p.origProc(), p.origId()
-        );
-    }
+    // OpenFOAM removes it: a system escape
+    outputs_->systemEscape
+    (
+        compat::parcelInjectorId(p), wallInteractionCloud::classDiameter(p),
+        p.nParticle(), p.nParticle()*p.mass(), p.origProc(), p.origId()
+    );
     return false;
 }
+
 
 
 template<class CloudType>
 void Foam::AdhesiveWallInteraction<CloudType>::checkDiameter
 (
-    const typename CloudType::parcelType& p,
+    const parcelType& p,
     const polyPatch& pp
 ) const
 {
@@ -360,6 +142,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::checkDiameter
 }
 
 
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -377,53 +160,43 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
         wallInteractionCloud::particle(cloud),
         compat::baseKeywords()
     ),
-    statistics_
-    (
-        coeffs_.entries().patchNames(),
-        coeffs_.entries().handled(),
-        coeffs_.outputByInjectorId()
-      ? wallInteractionCloud::injectorIds(cloud) : labelList(),
-        coeffs_.sizeClassEdges()
-    )
+    filesDir_(outputDir())
 {
     wallInteractionCloud::check
     (
         cloud, this->dict(), typeName, coeffs_.magnitudes()
     );
-    printSettings();
-    if (coeffs_.writeFields())
+    coeffs_.printSettings();
+    outputs_ = std::make_shared<wallOutputs>
+    (
+        coeffs_, cloud.mesh(), cloud.name(),
+        coeffs_.outputByInjectorId()
+      ? wallInteractionCloud::injectorIds(cloud) : labelList(),
+        filesDir_
+    );
+    resuspension_ = WallResuspension<CloudType>::New
+    (
+        cloud, coeffs_.entries(), wallPatches()
+    );
+    wallInteractionCloud::checkSurfaceContactPlace(cloud);
+
+    const propertiesOf<AdhesiveWallInteraction<CloudType>> properties(*this);
+    outputs_->restore(properties, compat::timeName(cloud.mesh().time()));
+    if (resuspension_)
     {
-        deposits_ = std::make_shared<depositFields>(cloud.mesh(), cloud.name());
-        Info<< "    Deposited mass and number per face written to "
-            << cloud.name() << ":massStick and " << cloud.name()
-            << ":nStick, escaped mass to " << cloud.name() << ":massEscape"
-            << endl;
+        resuspension_->restore(properties);
     }
-    if (coeffs_.writeToFile())
-    {
-        grade_ = std::make_shared<gradeEfficiency>
-        (
-            coeffs_.outputByInjectorId()
-          ? wallInteractionCloud::injectorIds(cloud) : labelList(),
-            coeffs_.sizeClassEdges()
-        );
-    }
-    setUpResuspension();
-    checkSurfaceContactPlace();
-    restore();
 
     // Without parcels at the start the initial mass is known now: none,
     // less what the injectors gave before the model counted (a model added
     // to a running case); otherwise it is found after the first step, as
     // what the other terms leave over (which then also holds what the
     // first step exchanged with the gas)
-    if (!balance_.started() && !wallInteractionCloud::startsWithParcels(cloud))
+    if (!outputs_->started() && !wallInteractionCloud::startsWithParcels(cloud))
     {
         // (0 - m: 0 rather than -0 when nothing was injected)
-        balance_.start(0 - wallInteractionCloud::injectedMass(cloud));
+        outputs_->start(0 - wallInteractionCloud::injectedMass(cloud));
     }
-
-    openFiles(cloud.name());
 }
 
 
@@ -432,7 +205,7 @@ Foam::AdhesiveWallInteraction<CloudType>::AdhesiveWallInteraction
 template<class CloudType>
 bool Foam::AdhesiveWallInteraction<CloudType>::correct
 (
-    typename CloudType::parcelType& p,
+    parcelType& p,
     const polyPatch& pp,
     bool& keepParticle
 )
@@ -450,18 +223,11 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
 
     vector nw, Up;
     this->owner().patchData(p, pp, nw, Up);
-    const brachDunn::Fate outcome = interact
+    interact
     (
-        p, pp, pp.whichFace(p.face()), -1, nw, Up, *entry, keepParticle
+        p, pp, pp.whichFace(p.face()), -1, nw, Up, *entry,
+        wallEvent::contact::centre, keepParticle
     );
-    if
-    (
-        contacts_ && contacts_->handles(pp.index())
-     && outcome != brachDunn::Fate::notApproaching
-    )
-    {
-        contacts_->addCentre(pp.index());
-    }
     return true;
 }
 
@@ -469,7 +235,7 @@ bool Foam::AdhesiveWallInteraction<CloudType>::correct
 template<class CloudType>
 bool Foam::AdhesiveWallInteraction<CloudType>::touch
 (
-    typename CloudType::parcelType& p,
+    parcelType& p,
     const label patchi,
     const label facei,
     const label faceProc,
@@ -485,39 +251,47 @@ bool Foam::AdhesiveWallInteraction<CloudType>::touch
     }
     checkDiameter(p, pp);
     const bool local = faceProc < 0 || faceProc == Pstream::myProcNo();
-    const vector Up = local ? wallVelocity(p, pp, facei, nw) : Zero;
-    const brachDunn::Fate outcome =
-        interact(p, pp, facei, faceProc, nw, Up, *entry, keepParticle);
-    // (the impacts taken, as the statistics count them: not a touch whose
-    // velocity points away from the wall, which the model leaves alone)
-    if (contacts_ && outcome != brachDunn::Fate::notApproaching)
-    {
-        contacts_->addSurface(patchi);
-    }
+    const vector Up =
+        local
+      ? wallInteractionCloud::wallVelocity(this->owner(), p, pp, facei, nw)
+      : vector(Zero);
+    interact
+    (
+        p, pp, facei, faceProc, nw, Up, *entry, wallEvent::contact::surface,
+        keepParticle
+    );
     return true;
 }
 
 
 template<class CloudType>
-Foam::vector Foam::AdhesiveWallInteraction<CloudType>::wallVelocity
-(
-    const typename CloudType::parcelType& p,
-    const polyPatch& pp,
-    const label facei,
-    const vector& nw
-) const
+void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
 {
-    // As KinematicCloud::patchData on a static mesh: the tangential part
-    // of a wall's velocity that its boundary condition sets (a lid, a belt)
-    const fvPatchVectorField& Uw1 = this->owner().U().boundaryField()[pp.index()];
-    if (!isA<wallPolyPatch>(pp) || !Uw1.fixesValue())
+    // In v1912 info() is the only call a patch interaction model gets after
+    // a step's tracking: the resuspension's end of step comes first, so
+    // that the totals, the balance and what a write time stores hold it.
+    // Once a step: a second info() in the step does nothing
+    const Time& time = this->owner().mesh().time();
+    if (time.timeIndex() == lastInfo_)
     {
-        return Zero;
+        return;
     }
-    const vector& Uw0 =
-        this->owner().U().oldTime().boundaryField()[pp.index()][facei];
-    const vector Uw = Uw0 + p.currentTimeFraction()*(Uw1[facei] - Uw0);
-    return Uw - (nw & Uw)*nw;
+    lastInfo_ = time.timeIndex();
+    if (resuspension_)
+    {
+        resuspension_->endOfStep(*outputs_);
+    }
+    propertiesOf<AdhesiveWallInteraction<CloudType>> properties(*this);
+    if (resuspension_ && this->writeTime())
+    {
+        resuspension_->store(properties);
+    }
+    outputs_->endOfStep
+    (
+        os, compat::timeName(time), this->writeTime(),
+        wallInteractionCloud::cloudState(this->owner(), *outputs_),
+        properties
+    );
 }
 
 
@@ -547,10 +321,12 @@ Foam::labelList Foam::AdhesiveWallInteraction<CloudType>::wallPatches() const
 }
 
 
+
 template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::countSurfaceContacts
+void Foam::AdhesiveWallInteraction<CloudType>::useSurfaceContact
 (
-    const word& function
+    const word& function,
+    const std::shared_ptr<wallEventSink>& counts
 )
 {
     if (!surfaceContactFunction_.empty() && function != surfaceContactFunction_)
@@ -562,210 +338,15 @@ void Foam::AdhesiveWallInteraction<CloudType>::countSurfaceContacts
             << " same contacts again. Keep one, with maxDiameter the largest"
             << " diameter of the parcels" << exit(FatalError);
     }
-    surfaceContactFunction_ = function;
-    if (contacts_)
+    if (!surfaceContactFunction_.empty())
     {
         return;
     }
-    const polyBoundaryMesh& patches = compat::boundaryMesh(this->owner().mesh());
-    const labelList walls(wallPatches());
-    wordList names(walls.size());
-    forAll(walls, i)
+    surfaceContactFunction_ = function;
+    outputs_->attach(counts);
+    if (resuspension_)
     {
-        names[i] = patches[walls[i]].name();
-    }
-    contacts_ = std::make_shared<surfaceContactCounts>(walls, names, patches.size());
-
-    labelList stored;
-    this->getModelProperty("surfaceContact", stored);
-    contacts_->restore(stored);
-
-    if (coeffs_.writeToFile() && Pstream::master())
-    {
-        contactFile_ = std::make_shared<OFstream>(filesDir_/"surfaceContact.dat");
-        contacts_->writeHeader(*contactFile_, this->owner().name());
-    }
-}
-
-
-template<class CloudType>
-brachDunn::Fate Foam::AdhesiveWallInteraction<CloudType>::interact
-(
-    typename CloudType::parcelType& p,
-    const polyPatch& pp,
-    const label facei,
-    const label faceProc,
-    const vector& nw,
-    const vector& Up,
-    const wallInteractionEntry& entry,
-    bool& keepParticle
-)
-{
-    using brachDunn::Fate;
-    constexpr bool colliding =
-        wallInteractionCloud::isColliding<typename CloudType::parcelType>::value;
-
-    if (rollsOn(p, nw, Up, entry))
-    {
-        keepParticle = true;
-        return Fate::notApproaching;
-    }
-
-    vector omega = Zero;
-    if constexpr (colliding)
-    {
-        omega = p.omega();
-    }
-
-    wallImpact impact;
-    try
-    {
-        impact = entry.impact(p.d(), p.rho(), p.U() - Up, nw, omega);
-    }
-    catch (const brachDunn::InputError& err)
-    {
-        FatalErrorInFunction
-            << "Parcel at " << compat::position(p, this->owner().mesh())
-            << " on patch " << pp.name() << ": " << err.what() << nl
-            << exit(FatalError);
-    }
-
-    if (impact.outcome == Fate::notApproaching)
-    {
-        keepParticle = true;
-        return impact.outcome;
-    }
-    impact.U += Up;
-    keepParticle = apply
-    (
-        p, impact, entry.type() == wallInteractionEntry::interaction::adhesive
-    );
-    count(p, pp, facei, faceProc, impact);
-    return impact.outcome;
-}
-
-
-template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::writeInfo(Ostream& os)
-{
-    // Resuspension first, so that the totals, the balance and what a write
-    // time stores hold it (writeInfo is the model's end-of-step call)
-    if (sites_)
-    {
-        resuspend();
-    }
-
-    // The full tables at write times (or every step, logTables yes),
-    // else one line per patch
-    const List<fateStatistics::row> totals(statistics_.totals());
-    if (coeffs_.logTables() || this->writeTime())
-    {
-        statistics_.print(os, totals);
-    }
-    else
-    {
-        statistics_.printSummary(os, totals);
-    }
-
-    if (statisticsFile_)
-    {
-        statistics_.write
-        (
-            *statisticsFile_, compat::timeName(this->owner().mesh().time()),
-            totals
-        );
-    }
-    if (records_)
-    {
-        records_->write();
-    }
-    if (grade_)
-    {
-        updateGradeEfficiency();
-    }
-    if (contacts_)
-    {
-        writeSurfaceContacts(os);
-    }
-
-    // The first step fixes the initial mass unless known at the start;
-    // write times print the balance
-    if (this->writeTime() || !balance_.started())
-    {
-        balance_.update
-        (
-            wallInteractionCloud::injectedMass(this->owner()),
-            wallInteractionCloud::airborneMass(this->owner()),
-            fateStatistics::mass(totals, brachDunn::Fate::capture),
-            fateStatistics::mass(totals, brachDunn::Fate::escape),
-            fateStatistics::mass(totals, brachDunn::Fate::resuspension)
-        );
-    }
-    if (this->writeTime())
-    {
-        balance_.write(os, compat::timeName(this->owner().mesh().time()));
-        store(totals);
-    }
-}
-
-
-template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::store
-(
-    const List<fateStatistics::row>& totals
-)
-{
-    this->setModelProperty("initialMass", balance_.storedText());
-    if (sites_)
-    {
-        labelList detached(2*detached_.size());
-        label i = 0;
-        for (const auto& key : detached_)
-        {
-            detached[i++] = key.first;
-            detached[i++] = key.second;
-        }
-        this->setModelProperty("detached", detached);
-    }
-    if (grade_)
-    {
-        this->setModelProperty("gradeEfficiency", grade_->storedText());
-    }
-    forAll(statistics_.patchNames(), patch)
-    {
-        this->setModelProperty
-        (
-            statistics_.patchNames()[patch],
-            statistics_.storedText(totals, patch)
-        );
-    }
-    statistics_.store(totals);
-}
-
-
-template<class CloudType>
-void Foam::AdhesiveWallInteraction<CloudType>::writeSurfaceContacts
-(
-    Ostream& os
-)
-{
-    // Deposits on other processors' faces reach their fields first
-    if (deposits_)
-    {
-        deposits_->exchange();
-    }
-    const labelList totals(contacts_->totals());
-    contacts_->print(os, totals);
-    if (contactFile_)
-    {
-        contacts_->write
-        (
-            *contactFile_, compat::timeName(this->owner().mesh().time()), totals
-        );
-    }
-    if (this->writeTime())
-    {
-        this->setModelProperty("surfaceContact", totals);
+        resuspension_->useSurfaceContact();
     }
 }
 

@@ -412,7 +412,7 @@ Foam::string Foam::wallInteractionEntry::describe() const
     }
     if (resuspension_)
     {
-        os  << "; resuspension " << resuspension_->model.describe()
+        os  << "; resuspension " << resuspension_->model->describe()
             << " seed " << resuspension_->seed;
         const std::vector<std::string>& defaulted = resuspension_->defaulted;
         for (std::size_t i = 0; i < defaulted.size(); ++i)

@@ -28,7 +28,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::setUp()
         return;
     }
 
-    model_ = dynamic_cast<AdhesiveWallInteraction<CloudType>*>
+    model_ = dynamic_cast<surfaceContactTarget<CloudType>*>
     (
         &this->owner().patchInteraction()
     );
@@ -40,14 +40,28 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::setUp()
             << " needs patchInteractionModel adhesiveWallInteraction, not "
             << this->owner().patchInteraction().type() << exit(FatalError);
     }
-    model_->countSurfaceContacts(this->modelName());
     checkOnlyMoves();
     checkMaxDiameter();
-    walls_ = std::make_shared<wallTriangles>
+    walls_ = &wallTriangles::New
     (
-        mesh, model_->wallPatches(), 0.5*maxDiameter_
+        mesh, this->owner().name(), model_->wallPatches(), 0.5*maxDiameter_
     );
-    model_->useWallTriangles(walls_);
+
+    // The counts of how parcels met the walls, kept in this function's
+    // properties and written beside the model's files
+    using properties = propertiesOf<AdhesiveWallSurfaceContact<CloudType>>;
+    const fileName dir(model_->filesDir());
+    counts_ = std::make_shared<surfaceContactCounts>
+    (
+        compat::boundaryMesh(mesh), model_->wallPatches()
+    );
+    counts_->keep
+    (
+        std::make_unique<properties>(*this),
+        dir.empty() ? fileName() : dir/"surfaceContact.dat",
+        this->owner().name()
+    );
+    model_->useSurfaceContact(this->modelName(), counts_);
     threeD_ = mesh.nGeometricD() == 3;
     positions_.emplace(mesh);
     Info<< "    " << this->modelName() << ": contact at the surface with "
@@ -69,7 +83,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::checkMaxDiameter() const
     const std::string warning = checkedInput::checkMagnitude
     (
         this->coeffDict(), "maxDiameter", maxDiameter_,
-        brachDunn::magnitude::diameter, model_->magnitudes().extreme
+        brachDunn::magnitude::diameter, model_->extremeValues()
     );
     if
     (
@@ -346,6 +360,7 @@ Foam::AdhesiveWallSurfaceContact<CloudType>::AdhesiveWallSurfaceContact
     maxDiameter_(other.maxDiameter_),
     walls_(other.walls_),
     model_(other.model_),
+    counts_(other.counts_),
     threeD_(other.threeD_),
     positions_(other.positions_)
 {}

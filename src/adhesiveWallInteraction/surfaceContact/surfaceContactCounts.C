@@ -4,6 +4,7 @@
 #include "ListOps.H"
 #include "Pstream.H"
 #include "PstreamReduceOps.H"
+#include "OSspecific.H"
 
 const Foam::wordList Foam::surfaceContactCounts::columns
 ({
@@ -13,18 +14,77 @@ const Foam::wordList Foam::surfaceContactCounts::columns
 
 Foam::surfaceContactCounts::surfaceContactCounts
 (
-    const labelList& patches,
-    const wordList& names,
-    const label nMeshPatches
+    const polyBoundaryMesh& boundary,
+    const labelList& patches
 )
 :
     patches_(patches),
-    names_(names),
-    surface_(nMeshPatches, Zero),
-    centre_(nMeshPatches, Zero),
+    names_(patches.size()),
+    surface_(boundary.size(), Zero),
+    centre_(boundary.size(), Zero),
     storedSurface_(patches.size(), Zero),
     storedCentre_(patches.size(), Zero)
-{}
+{
+    forAll(patches, i)
+    {
+        names_[i] = boundary[patches[i]].name();
+    }
+}
+
+
+void Foam::surfaceContactCounts::keep
+(
+    std::unique_ptr<modelProperties> properties,
+    const fileName& file,
+    const word& cloudName
+)
+{
+    properties_ = std::move(properties);
+    labelList stored;
+    properties_->get("surfaceContact", stored);
+    restore(stored);
+    if (!file.empty() && Pstream::master())
+    {
+        file_.reset(new OFstream(file));
+        writeHeader(*file_, cloudName);
+    }
+}
+
+
+void Foam::surfaceContactCounts::add(const wallEvent& event)
+{
+    // The impacts taken, as the statistics count them: not a touch whose
+    // velocity points away from the wall, which the model leaves alone
+    // (no event); a centre's only on the walls of the surface contact
+    if (event.via == wallEvent::contact::surface)
+    {
+        ++surface_[event.patchi];
+    }
+    else if (event.via == wallEvent::contact::centre && handles(event.patchi))
+    {
+        ++centre_[event.patchi];
+    }
+}
+
+
+void Foam::surfaceContactCounts::stepDone
+(
+    Ostream& os,
+    const word& timeName,
+    const bool writeTime
+)
+{
+    const labelList counts(totals());
+    print(os, counts);
+    if (file_)
+    {
+        write(*file_, timeName, counts);
+    }
+    if (writeTime && properties_)
+    {
+        properties_->set("surfaceContact", counts);
+    }
+}
 
 
 bool Foam::surfaceContactCounts::handles(const label patchi) const

@@ -300,20 +300,6 @@ void Foam::wallTriangles::groupByPlane
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::wallTriangles::wallTriangles
-(
-    const polyMesh& mesh,
-    const labelList& patches,
-    const scalar reach
-)
-{
-    addLocal(mesh, patches);
-    addRemote(mesh, reach);
-    addCandidates(mesh, reach);
-    groupByPlane(mesh, reach);
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 std::optional<brachDunn::Contact> Foam::wallTriangles::firstContact

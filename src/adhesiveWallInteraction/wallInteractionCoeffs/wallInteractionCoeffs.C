@@ -290,3 +290,33 @@ Foam::wallInteractionCoeffs::wallInteractionCoeffs
         }
     }
 }
+
+
+void Foam::wallInteractionCoeffs::printSettings() const
+{
+    const std::vector<std::string>* warningLists[] =
+    {
+        &entries().warnings(), magnitudes().warnings.get()
+    };
+    for (const auto* warnings : warningLists)
+    {
+        for (const std::string& warning : *warnings)
+        {
+            WarningInFunction << warning.c_str() << endl;
+        }
+    }
+    if (particle())
+    {
+        const particleConstants& constants = *particle();
+        Info<< "    particle: E " << constants.material.E << " nu "
+            << constants.material.nu << " (" << constants.origin.c_str()
+            << ")" << nl;
+    }
+    for (const wallInteractionEntry& entry : entries().entries())
+    {
+        Info<< "    " << entry.describe().c_str() << nl;
+    }
+}
+
+
+// ************************************************************************* //
