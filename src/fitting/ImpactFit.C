@@ -42,11 +42,7 @@ std::vector<double> elasticGamma
 } // End anonymous namespace
 
 
-//- Alternating passes at a split: the restitution law from the fast
-//  impacts with the adhesion found so far, then the adhesion law from the
-//  slow ones, until they settle or for so many passes; beginning with the
-//  restitution law and no adhesion (the paper's order), or with the
-//  adhesion law's initial guess from the slow rebounds taken as elastic
+// (FitParts.H)
 FitState alternatingFit
 (
     const FitProblem& problem,

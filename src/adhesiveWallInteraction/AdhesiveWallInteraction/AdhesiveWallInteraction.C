@@ -18,6 +18,47 @@ Foam::fileName Foam::AdhesiveWallInteraction<CloudType>::outputDir() const
 
 
 template<class CloudType>
+void Foam::AdhesiveWallInteraction<CloudType>::count
+(
+    const parcelType& p,
+    const polyPatch& pp,
+    const label facei,
+    const label faceProc,
+    const wallImpact& impact,
+    const wallEvent::contact via
+)
+{
+    using brachDunn::Fate;
+
+    const Time& time = this->owner().mesh().time();
+    wallEvent e = wallInteractionCloud::parcelEvent
+    (
+        p, impact.outcome, pp.index(), facei, faceProc,
+        time.value() - (1 - p.stepFraction())*time.deltaTValue(),
+        outputs_->needsPositions()
+      ? compat::position(p, this->owner().mesh()) : point(Zero)
+    );
+    e.impact = impact;
+    e.via = via;
+    if (resuspension_ && impact.outcome == Fate::capture)
+    {
+        // A deposit that may leave is credited to its site
+        resuspension_->captured(p);
+        const auto site =
+            outputs_->keepsDeposits()
+          ? resuspension_->siteOf(p) : std::nullopt;
+        if (site)
+        {
+            e.depositPatch = site->patchi;
+            e.depositFace = site->facei;
+            e.depositProc = site->proc;
+        }
+    }
+    outputs_->add(e);
+}
+
+
+template<class CloudType>
 void Foam::AdhesiveWallInteraction<CloudType>::interact
 (
     parcelType& p,
@@ -67,21 +108,7 @@ void Foam::AdhesiveWallInteraction<CloudType>::interact
         coeffs_.removeCaptured()
     );
 
-    wallEvent e = wallInteractionCloud::impactEvent
-    (
-        p, this->owner().mesh(), pp, facei, faceProc, impact, via
-    );
-    if (resuspension_ && impact.outcome == Fate::capture)
-    {
-        resuspension_->captured(p);
-        if (const auto site = resuspension_->siteOf(p))
-        {
-            e.depositPatch = site->patchi;
-            e.depositFace = site->facei;
-            e.depositProc = site->proc;
-        }
-    }
-    outputs_->add(e);
+    count(p, pp, facei, faceProc, impact, via);
 }
 
 

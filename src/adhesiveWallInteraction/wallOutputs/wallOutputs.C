@@ -3,6 +3,7 @@
 #include "OSspecific.H"
 #include "Pstream.H"
 #include "releaseCompat.H"
+#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -117,10 +118,18 @@ void Foam::wallOutputs::add(const wallEvent& e)
 {
     using brachDunn::Fate;
 
+    // The statistics' speed and angle from the normal [m/s, degrees] of an
+    // impact; of a resuspension, the friction velocity and 0
+    const wallImpact& impact = e.impact;
+    const bool resuspension = e.outcome == Fate::resuspension;
     statistics_.add
     (
         statistics_.rowOf(e.patchi, e.injectorId, e.d),
-        e.outcome, e.nParticle, e.mass, e.speed, e.angle
+        e.outcome, e.nParticle, e.mass,
+        resuspension
+      ? e.frictionVelocity : Foam::sqrt(sqr(impact.un) + sqr(impact.ut)),
+        resuspension
+      ? 0 : Foam::atan2(impact.ut, impact.un)*180/constant::mathematical::pi
     );
     if (grade_)
     {
@@ -155,8 +164,8 @@ void Foam::wallOutputs::add(const wallEvent& e)
         ({
             e.time, scalar(e.patchi), scalar(e.facei),
             e.position.x(), e.position.y(), e.position.z(),
-            e.d, e.nParticle, e.un, e.ut, scalar(e.outcome),
-            e.R, e.WA, e.unOut, e.utOut
+            e.d, e.nParticle, impact.un, impact.ut, scalar(e.outcome),
+            impact.R, impact.WA, impact.unOut, impact.utOut
         });
     }
     for (const auto& sink : sinks_)

@@ -176,6 +176,7 @@ template<class CloudType>
 void Foam::WallResuspension<CloudType>::release
 (
     parcelType& p,
+    const point& position,
     const depositSites::site& s,
     const scalar frictionVelocity,
     wallEventSink& outputs
@@ -183,10 +184,10 @@ void Foam::WallResuspension<CloudType>::release
 {
     wallEvent e = wallInteractionCloud::parcelEvent
     (
-        p, owner_.mesh(), brachDunn::Fate::resuspension, s.patchi, s.facei,
-        s.proc, owner_.mesh().time().value()
+        p, brachDunn::Fate::resuspension, s.patchi, s.facei, s.proc,
+        owner_.mesh().time().value(), position
     );
-    e.speed = frictionVelocity;
+    e.frictionVelocity = frictionVelocity;
     outputs.add(e);
 
     // Airborne again, at rest, clear of the wall it sat on
@@ -364,7 +365,7 @@ void Foam::WallResuspension<CloudType>::endOfStep(wallEventSink& outputs)
         uStarMax[s->patchi] = max(uStarMax[s->patchi], uStar);
         if (leaves(p, position, *s, flow, step))
         {
-            release(p, *s, uStar, outputs);
+            release(p, position, *s, uStar, outputs);
             released.push_back({p.origProc(), p.origId()});
         }
     }

@@ -57,9 +57,7 @@ void Foam::resuspensionModel::read
     checkedInput::requireKnownKeywords
     (
         dict, known,
-        "resuspension of type " + std::string(law_.kind
-        == brachDunn::DepositResuspension::Kind::rollingBalance
-        ? "rollingBalance" : "rockNRoll") + keywordNote(in)
+        "resuspension of type " + type() + keywordNote(in)
     );
 
     law_.w = checkedInput::readNumber(dict, "w");
