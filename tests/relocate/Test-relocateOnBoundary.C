@@ -1,5 +1,5 @@
 // adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
-// compat::relocateInCell against v1912's particle::relocate at positions
+// surfaceTracking::relocateInCell against v1912's particle::relocate at positions
 // on a cell's boundary faces as rounding puts them: the centres of the
 // case's floor faces (z = 0 exactly) and those points moved out of the
 // mesh by 1e-13 of the cell's size (a few hundred units in the last place
@@ -13,7 +13,7 @@
 
 #include "fvCFD.H"
 #include "passiveParticle.H"
-#include "releaseCompat.H"
+#include "surfaceTracking.H"
 
 namespace
 {
@@ -65,7 +65,7 @@ int main(int argc, char* argv[])
             }
 
             passiveParticle p(mesh, centre, celli);
-            if (stops([&]{ compat::relocateInCell(p, target); }))
+            if (stops([&]{ surfaceTracking::relocateInCell(p, target); }))
             {
                 Info<< "face " << k << " (" << out << "): relocateInCell stopped" << nl;
                 ++failures;
@@ -84,7 +84,7 @@ int main(int argc, char* argv[])
         const point inside = 0.5*(target + centre);
         passiveParticle q(mesh, centre, celli), r(mesh, centre, celli);
         q.relocate(inside, celli);
-        compat::relocateInCell(r, inside);
+        surfaceTracking::relocateInCell(r, inside);
         if (q.position() != r.position() || q.cell() != r.cell())
         {
             Info<< "face " << k << ": inside, " << r.position() << " not "
@@ -94,7 +94,7 @@ int main(int argc, char* argv[])
 
         // Beyond the face: outside the mesh, which still stops
         passiveParticle s(mesh, centre, celli);
-        if (!stops([&]{ compat::relocateInCell(s, target + 0.1*(target - centre)); }))
+        if (!stops([&]{ surfaceTracking::relocateInCell(s, target + 0.1*(target - centre)); }))
         {
             Info<< "face " << k << ": a position beyond the face ran on" << nl;
             ++failures;

@@ -464,7 +464,7 @@ void Foam::AdhesiveWallSurfaceContact<CloudType>::afterMove
     const point centre = position0 + contact->fraction*(end - position0);
     if (contact->fraction < 1)
     {
-        compat::moveBackTo
+        surfaceTracking::moveBackTo
         (
             p,
             *positions_,
