@@ -49,8 +49,7 @@ void Foam::ExactBrownianMotionForce<CloudType>::drawStep
     const typename CloudType::parcelType& p,
     const std::uint64_t draw,
     const vector& V0,
-    const scalar tau,
-    const scalar thermalVariance,
+    const scales& s,
     vector& X,
     vector& V
 ) const
@@ -67,7 +66,7 @@ void Foam::ExactBrownianMotionForce<CloudType>::drawStep
     if (draw == 0)
     {
         // A thermal start: the parcel in equilibrium with the gas
-        const scalar sigma = std::sqrt(thermalVariance);
+        const scalar sigma = std::sqrt(s.thermalVariance);
         for (direction i = 0; i < vector::nComponents; ++i)
         {
             start[i] = sigma*random.normal();
@@ -75,15 +74,18 @@ void Foam::ExactBrownianMotionForce<CloudType>::drawStep
     }
 
     const brachDunn::BrownianTransition transition =
-        brachDunn::brownianTransition(drawTrackTime_, tau, thermalVariance);
+        brachDunn::brownianTransition
+        (
+            drawTrackTime_, s.tau, s.thermalVariance
+        );
     for (direction i = 0; i < vector::nComponents; ++i)
     {
         const scalar z1 = random.normal();
         const scalar z2 = random.normal();
-        const brachDunn::BrownianSample s =
+        const brachDunn::BrownianSample sample =
             brachDunn::sampleBrownian(transition, start[i], z1, z2);
-        X[i] = s.displacement;
-        V[i] = s.velocity;
+        X[i] = sample.displacement;
+        V[i] = sample.velocity;
     }
 }
 
@@ -151,6 +153,60 @@ void Foam::ExactBrownianMotionForce<CloudType>::checkCloud
 
 
 template<class CloudType>
+typename Foam::ExactBrownianMotionForce<CloudType>::scales
+Foam::ExactBrownianMotionForce<CloudType>::scalesOf
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar dt,
+    const scalar mass,
+    const scalar Re,
+    const scalar muc
+) const
+{
+    // The friction of the drag actually selected
+    const auto& forces = this->owner().forces();
+    const scalar Sp = forces.calcCoupled(p, td, dt, mass, Re, muc).Sp();
+    if (!(Sp > 0))
+    {
+        FatalErrorInFunction
+            << "exactBrownianMotion needs a drag (slipSphereDrag, or another "
+            << "implicit coupled force) in particleForces: the friction of "
+            << "parcel " << p.origId() << " is " << Sp << nl
+            << exit(FatalError);
+    }
+    const scalar massEff = forces.massEff(p, td, mass);
+    return
+    {
+        Sp,
+        massEff,
+        massEff/Sp,
+        brachDunn::boltzmann*aerosolForces::temperatureAt(T_, td)/massEff
+    };
+}
+
+
+template<class CloudType>
+std::uint64_t Foam::ExactBrownianMotionForce<CloudType>::drawsTaken
+(
+    const typename CloudType::parcelType& p,
+    const scalar draws
+)
+{
+    // (whole numbers: exact at any writePrecision up to a million steps)
+    if (!std::isfinite(draws) || draws != std::floor(draws))
+    {
+        FatalErrorInFunction
+            << "exactBrownianMotion: parcel " << p.origId() << " of "
+            << "processor " << p.origProc() << " carries tTurb = " << draws
+            << ", not a count of Brownian draws (was the case run with a "
+            << "dispersion model?)" << nl << exit(FatalError);
+    }
+    return static_cast<std::uint64_t>(draws < 0 ? -draws - 1 : draws);
+}
+
+
+template<class CloudType>
 Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
 (
     const typename CloudType::parcelType& p,
@@ -166,54 +222,27 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
     {
         return value;
     }
-
-    // The friction of the drag actually selected
-    const auto& forces = this->owner().forces();
-    const scalar Sp = forces.calcCoupled(p, td, dt, mass, Re, muc).Sp();
-    if (!(Sp > 0))
-    {
-        FatalErrorInFunction
-            << "exactBrownianMotion needs a drag (slipSphereDrag, or another "
-            << "implicit coupled force) in particleForces: the friction of "
-            << "parcel " << p.origId() << " is " << Sp << nl
-            << exit(FatalError);
-    }
-    const scalar massEff = forces.massEff(p, td, mass);
-
-    const scalar tau = massEff/Sp;
-    const scalar thermalVariance =
-        brachDunn::boltzmann*aerosolForces::temperatureAt(T_, td)/massEff;
+    const scales s = scalesOf(p, td, dt, mass, Re, muc);
     const scalar trackTime = this->owner().solution().trackTime();
     if (drawTrackTime_ < 0)
     {
         checkCloud(trackTime);
     }
 
-    // tTurb: the count n of draws taken into the state, or -(n + 1) when
-    // the draw n is pending (whole numbers: exact at any writePrecision up
-    // to a million steps)
+    // The parcel's state: its tTurb counts the draws (drawsTaken) and its
+    // UTurb holds the velocity V0 the current draw starts from
     scalar& draws = compat::brownianDraws(p);
     vector& V0 = compat::brownianVelocity(p);
-    if (!std::isfinite(draws) || draws != std::floor(draws))
-    {
-        FatalErrorInFunction
-            << "exactBrownianMotion: parcel " << p.origId() << " of "
-            << "processor " << p.origProc() << " carries tTurb = " << draws
-            << ", not a count of Brownian draws (was the case run with a "
-            << "dispersion model?)" << nl << exit(FatalError);
-    }
     const bool pending = draws < 0;
-    std::uint64_t count =
-        static_cast<std::uint64_t>(pending ? -draws - 1 : draws);
+    std::uint64_t count = drawsTaken(p, draws);
 
     // The Brownian velocity held over this step: the current draw's
     // displacement over the step (none before the first draw)
-    vector W(Zero);
-    vector V(Zero);
+    vector W(Zero), V(Zero);
     if (count > 0)
     {
         vector X;
-        drawStep(p, count - 1, V0, tau, thermalVariance, X, V);
+        drawStep(p, count - 1, V0, s, X, V);
         W = X/drawTrackTime_;
     }
 
@@ -221,32 +250,28 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
     // sub-step that starts the next: not when the step was completed, as
     // a contact at the surface can take the parcel back into that step,
     // which it then completes again (one transition a step either way)
-    const bool startsStep = p.stepFraction() - dt/trackTime < 1e-9;
-    if (pending && startsStep)
+    if (pending && p.stepFraction() - dt/trackTime < 1e-9)
     {
         V0 = V;
-        ++count;
-        draws = count;
+        draws = ++count;
         vector X;
-        drawStep(p, count - 1, V0, tau, thermalVariance, X, V);
+        drawStep(p, count - 1, V0, s, X, V);
         W = X/drawTrackTime_;
     }
-    value.Su() = Sp*W;
+    value.Su() = s.Sp*W;
 
     // The sub-step that completes the time step draws the next step and
     // sets the held velocity to it (the impulse is exact for the cloud's
     // integration scheme: U -> U + (alpha - beta U) dtEff); a sub-step of
     // the rounding left after it (dt of order 1e-16 of the step) does not
-    const bool completesStep =
-        p.stepFraction() >= 1 - 1e-9 && dt > 1e-9*trackTime;
-    if (completesStep)
+    if (p.stepFraction() >= 1 - 1e-9 && dt > 1e-9*trackTime)
     {
         checkCloud(trackTime);
-        vector Xnext;
-        vector Vnext;
-        drawStep(p, count, V, tau, thermalVariance, Xnext, Vnext);
-        const scalar dtEff = this->owner().UIntegrator().dtEff(dt, Sp/massEff);
-        value.Su() += massEff*(Xnext/drawTrackTime_ - W)/dtEff;
+        vector Xnext, Vnext;
+        drawStep(p, count, V, s, Xnext, Vnext);
+        const scalar dtEff =
+            this->owner().UIntegrator().dtEff(dt, s.Sp/s.massEff);
+        value.Su() += s.massEff*(Xnext/drawTrackTime_ - W)/dtEff;
         draws = -scalar(count) - 1;
     }
     return value;
