@@ -35,6 +35,14 @@ Commands:
   Both read the latest run of CASE (a restart's totals continue those of
   the runs before it).
 
+  depositionVelocity CASE [CLOUD] [-windows N] [-start TIME]
+                     [-concentration C]
+                             per wall patch, size class and time window
+                             after the spin-up (or TIME): the deposition
+                             velocity V_d [m/s] and its standard error,
+                             from statistics.dat, gradeEfficiency.dat and
+                             the mesh (doc/guide/outputs.md), as CSV
+
   check SUBCOMMAND ...       the case tests' checks (adhesiveWallPost check
                              -help lists them)
 
@@ -69,6 +77,9 @@ def main(argv=None):
         return 0
     if command in ("sizeClasses", "gradeEfficiency") and arguments:
         return _case_table(command, arguments)
+    if command == "depositionVelocity":
+        from . import deposition
+        return deposition.run(arguments)
     if command == "check":
         from . import checks
         return checks.main(arguments)

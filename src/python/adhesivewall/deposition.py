@@ -1,0 +1,343 @@
+# adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
+"""Deposition velocity from the model's files: V_d per patch, size class
+and time window.
+
+    V_d = J/C,   J = N/(A dt),   C = mean(n_airborne)/V
+
+N the particles captured on the patch in the window (statistics.dat's
+captureParticles at the window's end less at its start), A the patch's
+area, dt the window's length, n_airborne the airborne particles of the
+size class (gradeEfficiency.dat, its rows in the window averaged) and V
+the domain's volume: C is the cross-section (volume) mean concentration.
+A user's own concentration [1/m^3] may replace it.
+
+Standard error: the captures are Poisson in parcels (N counts parcels of
+the same number of particles each: relative error 1/sqrt(captureParcels));
+the concentration's from the means of up to 10 consecutive batches of its
+rows (their standard deviation over sqrt(batches)); the two relative
+errors combined in quadrature. A window without captures reports 0 with
+the error of one capture.
+
+Spin-up: the run from time 0 to its last row is cut into 10 blocks of
+equal length; the deposition rate per airborne particle of all patches
+and size classes together is taken per block; the spin-up ends at the
+first block k (k at most 5) from which the blocks' rates are consistent
+with one constant: their chi-square about their weighted mean below its
+99th percentile (Wilson & Hilferty's approximation, z = 2.326). Where no
+such k exists the second half is used, and the result says so.
+
+Areas and volume come from the case's constant/polyMesh (ASCII, or
+gzip-compressed ASCII; a reconstructed mesh): each boundary face split
+into a fan of triangles from its first point, the area the sum of the
+triangles' areas, the volume (1/6) sum a.(b x c) over the boundary's
+triangles (Gauss; exact for the triangulated boundary).
+
+References:
+    Wilson, E.B. and Hilferty, M.M. (1931). The distribution of
+    chi-square. Proc. Natl. Acad. Sci. 17:684-688.
+"""
+
+import gzip
+import math
+import os
+import re
+
+import numpy as np
+
+from . import statistics
+from . import tables
+
+COLUMNS = ["patch", "dMin", "dMax", "tStart", "tEnd", "captureParcels",
+           "captureParticles", "airborneParticles", "concentration", "Vd",
+           "VdSE"]
+
+# The units of COLUMNS, in order: m, m, s, s, -, -, -, 1/m^3, m/s, m/s
+BLOCKS = 10
+
+
+def _text(path):
+    """A mesh file's text (path or path.gz); a binary file is refused."""
+    for name, opener in ((path, open), (path + ".gz", gzip.open)):
+        if os.path.isfile(name):
+            with opener(name, "rt") as handle:
+                text = handle.read()
+            if re.search(r"\bformat\s+binary\s*;", text):
+                raise ValueError(
+                    f"{name} is binary: convert it (foamFormatConvert with "
+                    f"writeFormat ascii) or give the areas and volume")
+            return text
+    raise FileNotFoundError(path)
+
+
+def _after_header(text):
+    """The text after the FoamFile header."""
+    match = re.search(r"FoamFile\s*\{[^}]*\}", text)
+    return text[match.end():] if match else text
+
+
+def read_points(path):
+    body = _after_header(_text(path))
+    start = body.index("(")
+    numbers = re.findall(r"[-+0-9.eE]+", body[start:body.rindex(")")])
+    return np.array([float(x) for x in numbers]).reshape(-1, 3)
+
+
+def read_faces(path):
+    """The faces of a faceList as lists of point labels."""
+    body = _after_header(_text(path))
+    body = body[body.index("(") + 1:]
+    return [[int(x) for x in labels.split()]
+            for labels in re.findall(r"\d+\s*\(([\d\s]+)\)", body)]
+
+
+def read_boundary(path):
+    """{patch: (startFace, nFaces)}."""
+    body = _after_header(_text(path))
+    patches = {}
+    for name, entries in re.findall(r"([^\s(){};]+)\s*\{([^}]*)\}", body):
+        n = re.search(r"\bnFaces\s+(\d+)\s*;", entries)
+        s = re.search(r"\bstartFace\s+(\d+)\s*;", entries)
+        if n and s:
+            patches[name] = (int(s.group(1)), int(n.group(1)))
+    return patches
+
+
+def areas_and_volume(case="."):
+    """The boundary patches' areas [m^2] and the domain's volume [m^3]."""
+    mesh = os.path.join(case, "constant", "polyMesh")
+    points = read_points(os.path.join(mesh, "points"))
+    faces = read_faces(os.path.join(mesh, "faces"))
+    areas, volume = {}, 0.0
+    boundary = read_boundary(os.path.join(mesh, "boundary"))
+    for name, (start, n) in boundary.items():
+        area = 0.0
+        for face in faces[start:start + n]:
+            a = points[face[0]]
+            for i in range(1, len(face) - 1):
+                b, c = points[face[i]], points[face[i + 1]]
+                area += 0.5*np.linalg.norm(np.cross(b - a, c - a))
+                volume += np.dot(a, np.cross(b, c))/6
+        areas[name] = area
+    return areas, volume
+
+
+def read_all_runs(case, cloud, name):
+    """A table of the model's (statistics.dat or gradeEfficiency.dat) over
+    all runs of the case: each run's rows from its start time on replace
+    the earlier runs' (a restart's totals continue them)."""
+    parent = os.path.dirname(statistics.output_folder(case, cloud, "0"))
+    starts = sorted((float(d), d) for d in os.listdir(parent)
+                    if tables.is_number(d))
+    merged = None
+    for value, folder in starts:
+        path = os.path.join(parent, folder, name)
+        if not os.path.isfile(path):
+            continue
+        table = tables.read(path)
+        if merged is None:
+            merged = table
+            continue
+        kept = [row for row, t in zip(merged.rows, merged["time"])
+                if t < value]
+        merged = tables.Table(merged.names, kept + table.rows, table.source)
+    if merged is None:
+        raise FileNotFoundError(os.path.join(parent, "0", name))
+    return merged
+
+
+def _classes(table):
+    return sorted({(float(a), float(b)) for a, b in
+                   zip(table["dMin"], table["dMax"])})
+
+
+def _total_at(table, column, time, **rows):
+    """The column's total over the rows selected at the last row time at
+    or before `time` (0 before the first)."""
+    times = table["time"]
+    before = times[times <= time + 1e-12*max(abs(time), 1e-300)]
+    if not len(before):
+        return 0.0
+    return table.where(time=float(before.max()), **rows).sum(column)
+
+
+def _injectors_once(table):
+    """The rows that count each particle once: the injector 'all' where
+    the table has it, else every injector's (to be summed)."""
+    if "all" in table.unique("injector"):
+        return table.where(injector="all")
+    return table
+
+
+def _airborne(grade, d_min, d_max, t_start, t_end):
+    """The airborne particles of a size class at each row time in
+    (tStart, tEnd], summed over the injectors."""
+    rows = grade.where(dMin=d_min, dMax=d_max,
+                       time=lambda t: t_start < float(t) <= t_end)
+    per_time = {}
+    for t, n in zip(rows["time"], rows["airborneParticles"]):
+        per_time[t] = per_time.get(t, 0.0) + n
+    return np.array([per_time[t] for t in sorted(per_time)])
+
+
+def _batch_error(values):
+    """The standard error of the mean of a series from the means of up to
+    10 consecutive batches (0 with fewer than 2 values)."""
+    batches = [b for b in np.array_split(values, min(BLOCKS, len(values)))
+               if len(b)]
+    if len(batches) < 2:
+        return 0.0
+    means = np.array([b.mean() for b in batches])
+    return float(means.std(ddof=1)/math.sqrt(len(means)))
+
+
+def window_rows(stats, grade, areas, volume, t_start, t_end,
+                concentration=None):
+    """The rows (COLUMNS) of the window (tStart, tEnd]: every patch of
+    statistics.dat that captured something in the run (the walls), every
+    size class."""
+    walls = [p for p in stats.unique("patch")
+             if stats.last_time().where(patch=p).sum("captureParticles") > 0]
+    rows = []
+    for patch in walls:
+        if patch not in areas:
+            raise KeyError(f"no patch '{patch}' in the mesh's boundary")
+        for d_min, d_max in _classes(stats):
+            select = dict(patch=patch, dMin=d_min, dMax=d_max)
+            parcels, particles = (
+                _total_at(stats, c, t_end, **select)
+                - _total_at(stats, c, t_start, **select)
+                for c in ("captureParcels", "captureParticles"))
+            airborne = _airborne(grade, d_min, d_max, t_start, t_end)
+            rows.append(_row(patch, d_min, d_max, t_start, t_end, parcels,
+                             particles, airborne, areas[patch], volume,
+                             concentration))
+    return rows
+
+
+def _row(patch, d_min, d_max, t_start, t_end, parcels, particles,
+         airborne, area, volume, concentration):
+    """One row: V_d and its standard error (module's description)."""
+    mean = float(airborne.mean()) if len(airborne) else 0.0
+    if concentration is None:
+        c = mean/volume
+        c_error = _batch_error(airborne)/mean if mean > 0 else 0.0
+    else:
+        c, c_error = concentration, 0.0
+    if not c > 0:
+        return [patch, d_min, d_max, t_start, t_end, parcels, particles,
+                mean, c, float("nan"), float("nan")]
+    flux = particles/(area*(t_end - t_start))
+    per_capture = 1/(area*(t_end - t_start)*c)
+    vd = flux/c
+    n_error = 1/math.sqrt(parcels) if parcels > 0 else 0.0
+    if parcels > 0:
+        se = vd*math.hypot(n_error, c_error)
+    else:
+        se = per_capture
+    return [patch, d_min, d_max, t_start, t_end, parcels, particles, mean,
+            c, vd, se]
+
+
+def chi2_quantile99(dof):
+    """The 99th percentile of chi-square with dof degrees of freedom
+    (Wilson & Hilferty 1931)."""
+    z = 2.326
+    return dof*(1 - 2/(9*dof) + z*math.sqrt(2/(9*dof)))**3
+
+
+def spin_up(stats, grade):
+    """(the end of the spin-up [s], whether the blocks after it are
+    steady): module's description; the tables with each particle once
+    (_injectors_once)."""
+    t_last = float(stats["time"].max())
+    edges = np.linspace(0.0, t_last, BLOCKS + 1)
+    captured, airborne_rows = stats, grade
+    rates, errors = [], []
+    for a, b in zip(edges[:-1], edges[1:]):
+        parcels = (_total_at(captured, "captureParcels", b)
+                   - _total_at(captured, "captureParcels", a))
+        n = airborne_rows.where(time=lambda t: a < float(t) <= b)
+        mean = n.sum("airborneParcels")/max(len(n.unique("time")), 1)
+        scale = 1/(mean*(b - a)) if mean > 0 else 0.0
+        rates.append(parcels*scale)
+        errors.append(math.sqrt(max(parcels, 1.0))*scale)
+    rates, errors = np.array(rates), np.array(errors)
+    for k in range(BLOCKS//2 + 1):
+        r, e = rates[k:], errors[k:]
+        if not np.all(e > 0):
+            continue
+        w = 1/e**2
+        mean = float((w*r).sum()/w.sum())
+        if float((((r - mean)/e)**2).sum()) < chi2_quantile99(len(r) - 1):
+            return float(edges[k]), True
+    return float(edges[BLOCKS//2]), False
+
+
+def deposition_velocity(case=".", cloud="kinematicCloud", windows=1,
+                        start=None, concentration=None, areas=None,
+                        volume=None):
+    """The rows (COLUMNS) of `windows` equal windows from the end of the
+    spin-up (or `start`) to the last row, and whether the spin-up's blocks
+    were steady (True where `start` is given)."""
+    stats = _injectors_once(read_all_runs(case, cloud, "statistics.dat"))
+    grade = _injectors_once(read_all_runs(case, cloud, "gradeEfficiency.dat"))
+    if areas is None or volume is None:
+        mesh_areas, mesh_volume = areas_and_volume(case)
+        areas = areas if areas is not None else mesh_areas
+        volume = volume if volume is not None else mesh_volume
+    steady = True
+    if start is None:
+        start, steady = spin_up(stats, grade)
+    t_last = float(stats["time"].max())
+    if not start < t_last:
+        raise ValueError(f"the start {start} s is not before the last "
+                         f"row's time {t_last} s")
+    edges = np.linspace(start, t_last, windows + 1)
+    rows = []
+    for a, b in zip(edges[:-1], edges[1:]):
+        rows += window_rows(stats, grade, areas, volume, float(a), float(b),
+                            concentration)
+    return rows, steady
+
+
+def _options(arguments):
+    """(case, cloud, keyword arguments) of the command line."""
+    names = {"-windows": ("windows", int), "-start": ("start", float),
+             "-concentration": ("concentration", float)}
+    positional, options = [], {}
+    i = 0
+    while i < len(arguments):
+        if arguments[i] in names:
+            if i + 1 == len(arguments):
+                raise ValueError(f"{arguments[i]} needs a value")
+            key, kind = names[arguments[i]]
+            options[key] = kind(arguments[i + 1])
+            i += 2
+        else:
+            positional.append(arguments[i])
+            i += 1
+    if not 1 <= len(positional) <= 2:
+        raise ValueError("give CASE [CLOUD]")
+    return positional[0], (positional[1:] or ["kinematicCloud"])[0], options
+
+
+def run(arguments):
+    """adhesiveWallPost depositionVelocity CASE [CLOUD] [-windows N]
+    [-start TIME] [-concentration C]: the rows as CSV on standard output;
+    the spin-up's end and whether it was found steady on standard error;
+    bad input in one line (exit status 1)."""
+    import sys
+    try:
+        case, cloud, options = _options(arguments)
+        rows, steady = deposition_velocity(case, cloud, **options)
+    except (ValueError, KeyError, FileNotFoundError) as err:
+        print(f"adhesiveWallPost depositionVelocity: {err}", file=sys.stderr)
+        return 1
+    if rows:
+        print(f"from {rows[0][3]} s" + ("" if steady else
+              ": no steady deposition rate found in the first half of the"
+              " run; the second half used"), file=sys.stderr)
+    print(",".join(COLUMNS))
+    for row in rows:
+        print(",".join(str(v) for v in row))
+    return 0
