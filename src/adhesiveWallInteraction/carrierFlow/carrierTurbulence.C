@@ -37,3 +37,29 @@ Foam::tmp<Foam::scalarField> Foam::carrierTurbulence::nut
     }
     return model_->nut(patch.index());
 }
+
+
+Foam::tmp<Foam::scalarField> Foam::carrierTurbulence::wallShearStress
+(
+    const fvPatch& patch,
+    const volVectorField& U,
+    const volScalarField& rho,
+    const volScalarField& mu
+) const
+{
+    const label patchi = patch.index();
+    const vectorField n(patch.nf());
+    const vectorField gradU(U.boundaryField()[patchi].snGrad());
+    const scalarField rhoC(rho.boundaryField()[patchi].patchInternalField());
+    const scalarField muC(mu.boundaryField()[patchi].patchInternalField());
+    const tmp<scalarField> nutW(nut(patch));
+    auto tau = tmp<scalarField>::New(patch.size());
+    forAll(n, facei)
+    {
+        const vector tangential =
+            gradU[facei] - (n[facei] & gradU[facei])*n[facei];
+        tau.ref()[facei] =
+            (muC[facei] + rhoC[facei]*nutW()[facei])*mag(tangential);
+    }
+    return tau;
+}

@@ -130,23 +130,19 @@ void Foam::depositSites::update
             continue;
         }
         const fvPatch& patch = mesh_.boundary()[patchi];
-        const vectorField n(patch.nf());
-        const vectorField gradU(U.boundaryField()[patchi].snGrad());
         const scalarField rhoC(rho.boundaryField()[patchi].patchInternalField());
         const scalarField muC(mu.boundaryField()[patchi].patchInternalField());
-        const tmp<scalarField> nutW(turbulence.nut(patch));
+        const tmp<scalarField> tau
+        (
+            turbulence.wallShearStress(patch, U, rho, mu)
+        );
 
         List<flow>& faces = flow_[patchi];
         faces.setSize(patch.size());
         forAll(faces, facei)
         {
-            const vector tangential = gradU[facei] - (n[facei] & gradU[facei])*n[facei];
             faces[facei] =
-            {
-                (muC[facei] + rhoC[facei]*nutW()[facei])*mag(tangential),
-                rhoC[facei],
-                muC[facei]/rhoC[facei]
-            };
+                {tau()[facei], rhoC[facei], muC[facei]/rhoC[facei]};
         }
     }
     exchange();
