@@ -5,8 +5,10 @@
 #include "AdhesiveWallSurfaceContact.H"
 #include "SlipSphereDragForce.H"
 #include "ExactBrownianMotionForce.H"
+#include "NearWallDispersionForce.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicKinematicCollidingCloud);
 makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicKinematicCollidingCloud);
 makeParticleForceModelType(SlipSphereDragForce, basicKinematicCollidingCloud);
 makeParticleForceModelType(ExactBrownianMotionForce, basicKinematicCollidingCloud);
+makeParticleForceModelType(NearWallDispersionForce, basicKinematicCollidingCloud);

@@ -5,8 +5,10 @@
 #include "AdhesiveWallSurfaceContact.H"
 #include "SlipSphereDragForce.H"
 #include "ExactBrownianMotionForce.H"
+#include "NearWallDispersionForce.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicKinematicCloud);
 makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicKinematicCloud);
 makeParticleForceModelType(SlipSphereDragForce, basicKinematicCloud);
 makeParticleForceModelType(ExactBrownianMotionForce, basicKinematicCloud);
+makeParticleForceModelType(NearWallDispersionForce, basicKinematicCloud);

@@ -164,18 +164,11 @@ Foam::ExactBrownianMotionForce<CloudType>::scalesOf
     const scalar muc
 ) const
 {
-    // The friction of the drag actually selected
-    const auto& forces = this->owner().forces();
-    const scalar Sp = forces.calcCoupled(p, td, dt, mass, Re, muc).Sp();
-    if (!(Sp > 0))
-    {
-        FatalErrorInFunction
-            << "exactBrownianMotion needs a drag (slipSphereDrag, or another "
-            << "implicit coupled force) in particleForces: the friction of "
-            << "parcel " << p.origId() << " is " << Sp << nl
-            << exit(FatalError);
-    }
-    const scalar massEff = forces.massEff(p, td, mass);
+    const scalar Sp = aerosolForces::dragFriction
+    (
+        this->owner(), p, td, dt, mass, Re, muc, "exactBrownianMotion"
+    );
+    const scalar massEff = this->owner().forces().massEff(p, td, mass);
     return
     {
         Sp,
@@ -231,8 +224,8 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
 
     // The parcel's state: its tTurb counts the draws (drawsTaken) and its
     // UTurb holds the velocity V0 the current draw starts from
-    scalar& draws = compat::brownianDraws(p);
-    vector& V0 = compat::brownianVelocity(p);
+    scalar& draws = compat::walkScalar(p);
+    vector& V0 = compat::walkVector(p);
     const bool pending = draws < 0;
     std::uint64_t count = drawsTaken(p, draws);
 

@@ -1,0 +1,306 @@
+// adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
+#include "NearWallDispersionForce.H"
+#include "CounterRandom.H"
+#include "carrierTurbulence.H"
+#include "checkedInput.H"
+#include "fvcGrad.H"
+#include "gasState.H"
+#include "releaseCompat.H"
+#include "wallPolyPatch.H"
+
+#include COMPAT_TURBULENCE_MODEL_H
+
+namespace Foam
+{
+namespace nearWallDispersion
+{
+
+inline brachDunn::Vector3 toCore(const vector& v)
+{
+    return {v.x(), v.y(), v.z()};
+}
+
+inline vector toFoam(const brachDunn::Vector3& v)
+{
+    return vector(v.x, v.y, v.z);
+}
+
+} // End namespace nearWallDispersion
+} // End namespace Foam
+
+
+template<class CloudType>
+Foam::NearWallDispersionForce<CloudType>::NearWallDispersionForce
+(
+    CloudType& owner,
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+:
+    ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
+    seed_(0),
+    units_(nullptr),
+    checked_(false)
+{
+    const dictionary& coeffs = checkedInput::withKnownKeywords
+    (
+        this->coeffs(),
+        {
+            "seed", "blendFrom", "blendTo", "C0", "crossing",
+            "timeFraction", "rmsChange"
+        },
+        "nearWallDispersion"
+    );
+    seed_ = checkedInput::readCount(coeffs, "seed", 0);
+    settings_.blendFrom =
+        checkedInput::readNumber(coeffs, "blendFrom", settings_.blendFrom);
+    settings_.blendTo =
+        checkedInput::readNumber(coeffs, "blendTo", settings_.blendTo);
+    settings_.C0 = checkedInput::readNumber(coeffs, "C0", settings_.C0);
+    settings_.crossing =
+        checkedInput::readNumber(coeffs, "crossing", settings_.crossing);
+    path_.timeFraction =
+        checkedInput::readNumber(coeffs, "timeFraction", path_.timeFraction);
+    path_.rmsChange =
+        checkedInput::readNumber(coeffs, "rmsChange", path_.rmsChange);
+    checkedInput::coreCall(coeffs, [&] { settings_.check(); });
+    checkedInput::coreCall(coeffs, [&] { path_.check(); });
+    Info<< "    nearWallDispersion: seed " << label(seed_)
+        << ", blend y+ " << settings_.blendFrom << " to "
+        << settings_.blendTo << ", C0 " << settings_.C0
+        << ", crossing " << settings_.crossing
+        << ", timeFraction " << path_.timeFraction
+        << ", rmsChange " << path_.rmsChange << endl;
+}
+
+
+template<class CloudType>
+Foam::NearWallDispersionForce<CloudType>::NearWallDispersionForce
+(
+    const NearWallDispersionForce& f
+)
+:
+    ParticleForce<CloudType>(f),
+    seed_(f.seed_),
+    settings_(f.settings_),
+    path_(f.path_),
+    units_(nullptr),
+    checked_(false)
+{}
+
+
+template<class CloudType>
+void Foam::NearWallDispersionForce<CloudType>::checkCloud() const
+{
+    const word dispersion = this->owner().dispersion().type();
+    if (dispersion != "none")
+    {
+        FatalErrorInFunction
+            << "nearWallDispersion keeps its state in the parcels' UTurb "
+            << "and tTurb: the cloud's dispersionModel must be none, not "
+            << dispersion << exit(FatalError);
+    }
+    for (const auto& force : this->owner().forces())
+    {
+        const word type = force.type();
+        if (type == "exactBrownianMotion" || type == "BrownianMotion")
+        {
+            FatalErrorInFunction
+                << "nearWallDispersion and " << type << " both keep a "
+                << "parcel's state in UTurb and tTurb: select one of them "
+                << "(Brownian and turbulent motion together are not built "
+                << "yet)" << exit(FatalError);
+        }
+    }
+    checked_ = true;
+}
+
+
+template<class CloudType>
+void Foam::NearWallDispersionForce<CloudType>::cacheFields(const bool store)
+{
+    if (!store)
+    {
+        k_.clear();
+        epsilon_.clear();
+        gradK_.clear();
+        return;
+    }
+    const CloudType& cloud = this->owner();
+    const carrierTurbulence turbulence(cloud.U());
+    const word type =
+        turbulence.model()
+      ? turbulence.model()->template lookupOrDefault<word>
+        (
+            "simulationType", "laminar"
+        )
+      : word("none");
+    if (type != "RAS")
+    {
+        FatalErrorInFunction
+            << "nearWallDispersion takes k and epsilon of the carrier "
+            << "flow's RAS model: the carrier of cloud " << cloud.name()
+            << " has a turbulence model of simulationType " << type
+            << exit(FatalError);
+    }
+    bool walls = false;
+    for (const fvPatch& patch : this->mesh().boundary())
+    {
+        walls = walls || isA<wallPolyPatch>(patch.patch());
+    }
+    if (!returnReduce(walls, orOp<bool>()))
+    {
+        FatalErrorInFunction
+            << "nearWallDispersion needs a wall patch: the mesh of cloud "
+            << cloud.name() << " has none" << exit(FatalError);
+    }
+    units_ = &wallUnits::New(cloud.U(), cloud.rho(), cloud.mu());
+    k_ = turbulence.model()->k();
+    epsilon_ = turbulence.model()->epsilon();
+    gradK_ = fvc::grad(k_());
+}
+
+
+template<class CloudType>
+brachDunn::FlowAtParticle
+Foam::NearWallDispersionForce<CloudType>::flowAt
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar muc,
+    const scalar tauP,
+    brachDunn::WallFrame& frame
+) const
+{
+    using namespace nearWallDispersion;
+    const fvMesh& mesh = this->mesh();
+    const label celli = p.cell();
+    const vector offset =
+        compat::position(p, mesh) - mesh.cellCentres()[celli];
+    const vector& n = units_->normal()[celli];
+    frame = brachDunn::WallFrame::of(toCore(n), toCore(td.Uc()));
+    const scalar y = max(units_->y()[celli] + (offset & n), scalar(0));
+    const scalar uStar = units_->uStar()[celli];
+    const scalar nu = muc/td.rhoc();
+    const scalar kCell = k_()[celli];
+    // The mean slip of crossing trajectories (Csanady 1963): the settling
+    // drift tau_p (1 - rho_c/rho_p) g, not the instantaneous relative
+    // velocity, which holds the fluctuation itself and would make the time
+    // scale depend on it
+    const vector slip =
+        tauP*(1 - td.rhoc()/p.rho())*this->owner().g().value();
+    const vector& gradK = gradK_()[celli];
+    return
+    {
+        uStar > 0 ? y*uStar/nu : 0,
+        uStar,
+        nu,
+        max(kCell + (gradK & offset), 1e-3*kCell),
+        epsilon_()[celli],
+        frame.local(toCore(gradK)),
+        frame.local(toCore(slip))
+    };
+}
+
+
+template<class CloudType>
+brachDunn::PathStep Foam::NearWallDispersionForce<CloudType>::walk
+(
+    const typename CloudType::parcelType& p,
+    brachDunn::FlowAtParticle flow,
+    const brachDunn::WallFrame& frame,
+    const scalar tauP
+) const
+{
+    using namespace nearWallDispersion;
+    const std::uint64_t step = max
+    (
+        brachDunn::textCounter(compat::timeName(this->mesh().time())),
+        std::uint64_t(1)
+    );
+    const std::uint64_t proc =
+        static_cast<std::uint64_t>(static_cast<std::int64_t>(p.origProc()));
+    const std::uint64_t id =
+        static_cast<std::uint64_t>(static_cast<std::int64_t>(p.origId()));
+
+    // The state: w at the step's start (UTurb, its components along the
+    // wall's frame's axes given as a global vector, so that a parcel whose
+    // nearest wall changes keeps the direction of its fluctuation) and the
+    // wall distance there (tTurb > 0); 0 a new parcel (w drawn from the
+    // stationary law's fluctuation), < 0 a step completed (this sub-step
+    // starts the next)
+    vector& w = compat::walkVector(p);
+    scalar& start = compat::walkScalar(p);
+    if (start == 0)
+    {
+        brachDunn::CounterRandom random(seed_, proc, id, 2*step + 1);
+        w = vector(random.normal(), random.normal(), random.normal());
+    }
+    if (start <= 0)
+    {
+        const scalar y = flow.uStar > 0 ? flow.yPlus*flow.nu/flow.uStar : 0;
+        start = max(y, VSMALL);
+    }
+    flow.yPlus = start*flow.uStar/flow.nu;
+
+    brachDunn::CounterRandom random(seed_, proc, id, 2*step);
+    const scalar trackTime = this->owner().solution().trackTime();
+    return checkedInput::coreCall
+    (
+        this->coeffs(),
+        [&]
+        {
+            return brachDunn::seenVelocityPath
+            (
+                {frame.local(toCore(w)), 0, tauP}, flow, settings_, path_,
+                trackTime, random
+            );
+        }
+    );
+}
+
+
+template<class CloudType>
+Foam::forceSuSp Foam::NearWallDispersionForce<CloudType>::calcNonCoupled
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar dt,
+    const scalar mass,
+    const scalar Re,
+    const scalar muc
+) const
+{
+    using namespace nearWallDispersion;
+    forceSuSp value(Zero);
+    if (!compat::isActive(p))
+    {
+        return value;
+    }
+    if (!checked_)
+    {
+        checkCloud();
+    }
+    const scalar Sp = aerosolForces::dragFriction
+    (
+        this->owner(), p, td, dt, mass, Re, muc, "nearWallDispersion"
+    );
+    const scalar tauP = this->owner().forces().massEff(p, td, mass)/Sp;
+    brachDunn::WallFrame frame;
+    const brachDunn::PathStep walked =
+        walk(p, flowAt(p, td, muc, tauP, frame), frame, tauP);
+    value.Su() = Sp*toFoam(frame.global(walked.meanFluctuation));
+
+    // The sub-step that completes the step keeps the end's w for the next
+    // (a sub-step of the rounding left after it does not)
+    const scalar trackTime = this->owner().solution().trackTime();
+    if (p.stepFraction() >= 1 - 1e-9 && dt > 1e-9*trackTime)
+    {
+        compat::walkVector(p) = toFoam(frame.global(walked.w));
+        compat::walkScalar(p) = -1;
+    }
+    return value;
+}
+
+
+// ************************************************************************* //

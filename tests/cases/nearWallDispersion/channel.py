@@ -1,0 +1,134 @@
+# adhesiveWallInteraction | SPDX-License-Identifier: GPL-3.0-or-later
+"""The turbulent channel of the nearWallDispersion case test, in air
+(nu 1.5e-5 m^2/s) at u* 0.5 m/s: wall unit 3e-5 m and 6e-5 s, half-height
+180 wall units (5.4 mm), 50 x 10 mm periodic along the flow and across
+it; 40 cells a half, the first 0.5 wall units. The frozen RANS flow:
+U+ Reichardt's law (kappa 0.41), k+ 1.9 up to y+ 80 falling to 1.3 at the
+centre, epsilon from Kallio & Reeks' T_L+ 51.47 (as tests/unit's channel),
+nut 0 at the walls.
+
+    channel.py mesh          system/blockMeshDict
+    channel.py fields N      0/U, k, epsilon, nut (after writeCellCentres)
+                             and N tracer positions uniform in the channel
+    channel.py bins TIME     the concentration relative to the mean and its
+                             binomial SE per wall-distance bin (y+ 0-1, 1-3,
+                             3-10, 10-30, 30-60, 60-100, 100-180), both
+                             halves folded: 'a-b value se' a line
+"""
+import math
+import random
+import re
+import sys
+
+NU, U_STAR = 1.5e-5, 0.5
+LP = NU/U_STAR
+DELTA = 180*LP
+LX, LZ, N = 50e-3, 10e-3, 40
+EDGES = [0, 1, 3, 10, 30, 60, 100, 180]
+HEADER = "FoamFile { version 2.0; format ascii; class %s; object %s; }\n"
+
+
+def grading():
+    """The last cell over the first of a half: N cells growing
+    geometrically from 0.5 wall units to fill 180."""
+    lo, hi = 1.0001, 2.0
+    for _ in range(200):
+        r = 0.5*(lo + hi)
+        lo, hi = (r, hi) if 0.5*(r**N - 1)/(r - 1) < 180 else (lo, r)
+    return r**(N - 1)
+
+
+def mesh():
+    g = grading()
+    v = lambda layer, i: 4*layer + i
+    quad = lambda *ids: "(%s)" % " ".join(str(i) for i in ids)
+    with open("system/blockMeshDict", "w") as f:
+        f.write(HEADER % ("dictionary", "blockMeshDict") + "vertices (\n")
+        for y in (0, DELTA, 2*DELTA):
+            f.write("(0 %r 0) (%r %r 0) (%r %r %r) (0 %r %r)\n"
+                    % (y, LX, y, LX, y, LZ, y, LZ))
+        f.write(");\nblocks (\n")
+        for layer, ratio in ((0, g), (1, 1/g)):
+            ids = [v(layer, 0), v(layer, 1), v(layer + 1, 1), v(layer + 1, 0),
+                   v(layer, 3), v(layer, 2), v(layer + 1, 2), v(layer + 1, 3)]
+            f.write("hex %s (2 %d 1) simpleGrading (1 %r 1)\n"
+                    % (quad(*ids), N, ratio))
+        f.write(");\nboundary (\n")
+        f.write("walls { type wall; faces (%s %s); }\n"
+                % (quad(0, 1, 2, 3), quad(8, 11, 10, 9)))
+        pairs = (("left", "right", (0, 3, 7, 4), (4, 7, 11, 8),
+                  (1, 5, 6, 2), (5, 9, 10, 6)),
+                 ("front", "back", (0, 4, 5, 1), (4, 8, 9, 5),
+                  (3, 2, 6, 7), (7, 6, 10, 11)))
+        for a, b, fa, fa2, fb, fb2 in pairs:
+            f.write("%s { type cyclic; neighbourPatch %s; faces (%s %s); }\n"
+                    % (a, b, quad(*fa), quad(*fa2)))
+            f.write("%s { type cyclic; neighbourPatch %s; faces (%s %s); }\n"
+                    % (b, a, quad(*fb), quad(*fb2)))
+        f.write(");\n")
+
+
+def u_plus(y):
+    k = 0.41
+    return (math.log(1 + k*y)/k
+            + 7.8*(1 - math.exp(-y/11) - (y/11)*math.exp(-y/3)))
+
+
+def k_plus(y):
+    t = min(max((y - 80)/100, 0), 1)
+    return 1.9 - 0.6*t*(2 - t)
+
+
+def write_field(name, cls, dims, values, wall):
+    kind = "vector" if cls == "volVectorField" else "scalar"
+    with open("0/" + name, "w") as f:
+        f.write(HEADER % (cls, name))
+        f.write("dimensions %s;\ninternalField nonuniform List<%s> %d (\n"
+                % (dims, kind, len(values)))
+        f.write("\n".join(values) + "\n);\nboundaryField {\n")
+        f.write("    walls { %s }\n" % wall)
+        f.write("    \"(left|right|front|back)\" { type cyclic; }\n}\n")
+
+
+def fields(n):
+    text = open("0/Cy").read()
+    body = text[text.index("internalField"):]
+    count = int(re.search(r"List<scalar>\s*(\d+)", body).group(1))
+    body = body[body.index("(") + 1:]
+    ys = [float(x) for x in body[:body.index(")")].split()][:count]
+    yp = [min(y, 2*DELTA - y)/LP for y in ys]
+    k = [U_STAR**2*k_plus(y) for y in yp]
+    eps = [v/(51.47*(0.5 + 0.75*2.1))*U_STAR**2/NU for v in k]
+    write_field("U", "volVectorField", "[0 1 -1 0 0 0 0]",
+                ["(%r 0 0)" % (U_STAR*u_plus(y)) for y in yp],
+                "type noSlip;")
+    fixed = "type fixedValue; value uniform %s;"
+    write_field("k", "volScalarField", "[0 2 -2 0 0 0 0]",
+                [repr(v) for v in k], fixed % "1e-12")
+    write_field("epsilon", "volScalarField", "[0 2 -3 0 0 0 0]",
+                [repr(v) for v in eps], fixed % "1e-12")
+    write_field("nut", "volScalarField", "[0 2 -1 0 0 0 0]",
+                [repr(0.09*a*a/b) for a, b in zip(k, eps)], fixed % "0")
+    rng = random.Random(3)
+    with open("constant/positions", "w") as f:
+        f.write(HEADER % ("vectorField", "positions") + "%d\n(\n" % n)
+        for _ in range(n):
+            f.write("(%r %r %r)\n" % (rng.uniform(0, LX),
+                                      rng.uniform(0, 2*DELTA),
+                                      rng.uniform(0, LZ)))
+        f.write(")\n")
+
+
+def bins(time):
+    from adhesivewall import aerosol
+    yp = [min(p[1], 2*DELTA - p[1])/LP for p in aerosol.positions(".", time)]
+    n = len(yp)
+    for a, b in zip(EDGES[:-1], EDGES[1:]):
+        share = (b - a)/180
+        count = sum(1 for y in yp if a <= y < b)
+        print(a, b, count/(share*n), math.sqrt((1 - share)/(share*n)))
+
+
+if __name__ == "__main__":
+    {"mesh": lambda: mesh(), "fields": lambda: fields(int(sys.argv[2])),
+     "bins": lambda: bins(sys.argv[2])}[sys.argv[1]]()
