@@ -8,7 +8,10 @@ airborne (parcels of 1) captured at 100 per second from the start. The
 expected values by hand: V_d = N/(A dt C), C = n/V:
     class 1 over (3, 10]: 1400 x 0.5/(2 x 7 x 1000) = 0.05 m/s, 700 parcels;
     class 2 over (3, 10]: 700 x 0.5/(2 x 7 x 250) = 0.1 m/s, 700 parcels;
-the concentration constant, so the standard error is V_d/sqrt(parcels)."""
+the concentration constant, so the standard error is V_d/sqrt(parcels).
+The uniformity check on the box as 4 cells along z: parcels written 100 a
+cell (ratio 1) and 300 of 400 in the floor's cell (3, its binomial SE
+sqrt(p (1 - p)/n)/p with p = 1/4)."""
 
 import math
 import os
@@ -16,6 +19,7 @@ import os
 import pytest
 
 from adhesivewall import deposition
+from adhesivewall import polymesh
 from adhesivewall.__main__ import main
 
 POINTS = [(0, 0, 0), (2, 0, 0), (2, 1, 0), (0, 1, 0),
@@ -92,7 +96,7 @@ def case(tmp_path):
 
 
 def test_areas_and_volume_of_the_box(case):
-    areas, volume = deposition.areas_and_volume(case)
+    areas, volume = polymesh.areas_and_volume(case)
     assert areas["floor"] == pytest.approx(2, rel=1e-14)
     # the top 2 x 1, the long sides 2 x 0.25, the ends 1 x 0.25
     assert areas["walls"] == pytest.approx(2 + 2*0.5 + 2*0.25, rel=1e-14)
@@ -102,7 +106,7 @@ def test_areas_and_volume_of_the_box(case):
 def test_binary_mesh_is_refused_by_name(tmp_path):
     write_mesh(str(tmp_path), binary=True)
     with pytest.raises(ValueError, match="points is binary"):
-        deposition.areas_and_volume(str(tmp_path))
+        polymesh.areas_and_volume(str(tmp_path))
 
 
 def check_floor(rows, start=3.0):
@@ -186,3 +190,96 @@ def test_command_line(case, capsys):
     assert len(out) == 3
     assert main(["depositionVelocity", case, "kinematicCloud",
                  "-start", "20"]) == 1
+
+
+def write_column(case, layers=4):
+    """The same 2 x 1 x 0.25 m box as `layers` cells stacked along z (the
+    floor's cell first): owner and neighbour too."""
+    mesh = os.path.join(case, "constant", "polyMesh")
+    os.makedirs(mesh, exist_ok=True)
+    dz = 0.25/layers
+    rings = [[(0, 0, k*dz), (2, 0, k*dz), (2, 1, k*dz), (0, 1, k*dz)]
+             for k in range(layers + 1)]
+    points = [p for ring in rings for p in ring]
+    v = lambda k, i: 4*k + i
+    internal = [((v(k, 0), v(k, 1), v(k, 2), v(k, 3)), k, k - 1)
+                for k in range(1, layers)]
+    floor = [((v(0, 0), v(0, 3), v(0, 2), v(0, 1)), 0)]
+    walls = [((v(layers, 0), v(layers, 1), v(layers, 2), v(layers, 3)),
+              layers - 1)]
+    for k in range(layers):
+        walls += [((v(k, 0), v(k, 1), v(k + 1, 1), v(k + 1, 0)), k),
+                  ((v(k, 2), v(k, 3), v(k + 1, 3), v(k + 1, 2)), k),
+                  ((v(k, 0), v(k + 1, 0), v(k + 1, 3), v(k, 3)), k),
+                  ((v(k, 1), v(k, 2), v(k + 1, 2), v(k + 1, 1)), k)]
+    # internal faces point from owner (below) to neighbour: their points
+    # ordered for +z, owner k - 1, neighbour k
+    faces = [f for f, _, _ in internal] + [f for f, _ in floor + walls]
+    owner = ([k - 1 for _, k, _ in internal]
+             + [c for _, c in floor + walls])
+    neighbour = [k for _, k, _ in internal]
+    files = {"points": ("vectorField", ["(%g %g %g)" % p for p in points]),
+             "faces": ("faceList", ["4(%d %d %d %d)" % f for f in faces]),
+             "owner": ("labelList", [str(c) for c in owner]),
+             "neighbour": ("labelList", [str(c) for c in neighbour])}
+    for name, (cls, lines) in files.items():
+        with open(os.path.join(mesh, name), "w") as f:
+            f.write(HEADER % cls + "\n%d\n(\n" % len(lines))
+            f.write("\n".join(lines) + "\n)\n")
+    n_internal = len(internal)
+    with open(os.path.join(mesh, "boundary"), "w") as f:
+        f.write(HEADER % "polyBoundaryMesh" + "\n2\n(\n"
+                "    floor { type wall; nFaces 1; startFace %d; }\n"
+                "    walls { type wall; nFaces %d; startFace %d; }\n)\n"
+                % (n_internal, len(walls), n_internal + 1))
+
+
+def write_parcels(case, time, per_cell):
+    folder = os.path.join(case, time, "lagrangian", "kinematicCloud")
+    os.makedirs(folder, exist_ok=True)
+    lines = ["(1 0.5 0.1) %d" % cell
+             for cell, n in enumerate(per_cell) for _ in range(n)]
+    with open(os.path.join(folder, "positions"), "w") as f:
+        f.write(HEADER % "Cloud<basicKinematicCollidingParcel>"
+                + "\n%d\n(\n" % len(lines) + "\n".join(lines) + "\n)\n")
+
+
+def test_cell_volumes_and_cells_on(tmp_path):
+    case = str(tmp_path)
+    write_column(case)
+    assert polymesh.cell_volumes(case) == \
+        pytest.approx([0.125]*4, rel=1e-14)
+    assert polymesh.cells_on(case, ["floor"]) == [0]
+    areas, volume = polymesh.areas_and_volume(case)
+    assert volume == pytest.approx(0.5, rel=1e-14)
+
+
+def test_uniformity_of_the_airborne_parcels(tmp_path):
+    case = str(tmp_path)
+    write_column(case)
+    write_parcels(case, "4", [100, 100, 100, 100])
+    write_parcels(case, "8", [300, 40, 30, 30])
+    # uniform: the floor's cell (a quarter of the volume) holds a quarter
+    ratio, error, n = deposition.uniformity(case, "kinematicCloud",
+                                            ["floor"], 3, 5)
+    assert (ratio, n) == (pytest.approx(1.0), 400)
+    # SE: sqrt(p (1 - p)/n)/p, p = 1/4
+    assert error == pytest.approx(math.sqrt(0.25*0.75/400)/0.25)
+    assert not deposition.far_from_uniform(ratio, error)
+    # gathered at the floor: 300 of 400 in a quarter of the volume
+    ratio, error, n = deposition.uniformity(case, "kinematicCloud",
+                                            ["floor"], 5, 10)
+    assert ratio == pytest.approx(3.0)
+    assert deposition.far_from_uniform(ratio, error)
+    assert deposition.uniformity(case, "kinematicCloud", ["floor"],
+                                 10, 20) is None
+
+
+def test_command_line_warns_of_a_gathered_profile(tmp_path, capsys):
+    case = str(tmp_path)
+    write_column(case)
+    write_tables(case)
+    write_parcels(case, "8", [300, 40, 30, 30])
+    assert main(["depositionVelocity", case, "-start", "3"]) == 0
+    assert "warning: the airborne concentration in the cells on floor " \
+        "is 3 +- 0.087 times the mean" in capsys.readouterr().err

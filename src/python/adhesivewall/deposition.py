@@ -26,24 +26,28 @@ with one constant: their chi-square about their weighted mean below its
 99th percentile (Wilson & Hilferty's approximation, z = 2.326). Where no
 such k exists the second half is used, and the result says so.
 
-Areas and volume come from the case's constant/polyMesh (ASCII, or
-gzip-compressed ASCII; a reconstructed mesh): each boundary face split
-into a fan of triangles from its first point, the area the sum of the
-triangles' areas, the volume (1/6) sum a.(b x c) over the boundary's
-triangles (Gauss; exact for the triangulated boundary).
+Areas and volume come from the case's constant/polyMesh (polymesh.py).
+
+Uniformity: V_d as J/C assumes the airborne concentration uniform over the
+cross-section; where the parcels gather near the walls or away from them,
+the volume mean is not the concentration that drives deposition. The
+airborne parcels written in the window's time folders (their cells) give
+the concentration in the cells on the capturing walls against the mean;
+a ratio outside [1/2, 2] beyond 3 binomial standard errors is warned of.
 
 References:
     Wilson, E.B. and Hilferty, M.M. (1931). The distribution of
     chi-square. Proc. Natl. Acad. Sci. 17:684-688.
 """
 
-import gzip
 import math
 import os
 import re
+import sys
 
 import numpy as np
 
+from . import polymesh
 from . import statistics
 from . import tables
 
@@ -53,72 +57,6 @@ COLUMNS = ["patch", "dMin", "dMax", "tStart", "tEnd", "captureParcels",
 
 # The units of COLUMNS, in order: m, m, s, s, -, -, -, 1/m^3, m/s, m/s
 BLOCKS = 10
-
-
-def _text(path):
-    """A mesh file's text (path or path.gz); a binary file is refused."""
-    for name, opener in ((path, open), (path + ".gz", gzip.open)):
-        if os.path.isfile(name):
-            with opener(name, "rt") as handle:
-                text = handle.read()
-            if re.search(r"\bformat\s+binary\s*;", text):
-                raise ValueError(
-                    f"{name} is binary: convert it (foamFormatConvert with "
-                    f"writeFormat ascii) or give the areas and volume")
-            return text
-    raise FileNotFoundError(path)
-
-
-def _after_header(text):
-    """The text after the FoamFile header."""
-    match = re.search(r"FoamFile\s*\{[^}]*\}", text)
-    return text[match.end():] if match else text
-
-
-def read_points(path):
-    body = _after_header(_text(path))
-    start = body.index("(")
-    numbers = re.findall(r"[-+0-9.eE]+", body[start:body.rindex(")")])
-    return np.array([float(x) for x in numbers]).reshape(-1, 3)
-
-
-def read_faces(path):
-    """The faces of a faceList as lists of point labels."""
-    body = _after_header(_text(path))
-    body = body[body.index("(") + 1:]
-    return [[int(x) for x in labels.split()]
-            for labels in re.findall(r"\d+\s*\(([\d\s]+)\)", body)]
-
-
-def read_boundary(path):
-    """{patch: (startFace, nFaces)}."""
-    body = _after_header(_text(path))
-    patches = {}
-    for name, entries in re.findall(r"([^\s(){};]+)\s*\{([^}]*)\}", body):
-        n = re.search(r"\bnFaces\s+(\d+)\s*;", entries)
-        s = re.search(r"\bstartFace\s+(\d+)\s*;", entries)
-        if n and s:
-            patches[name] = (int(s.group(1)), int(n.group(1)))
-    return patches
-
-
-def areas_and_volume(case="."):
-    """The boundary patches' areas [m^2] and the domain's volume [m^3]."""
-    mesh = os.path.join(case, "constant", "polyMesh")
-    points = read_points(os.path.join(mesh, "points"))
-    faces = read_faces(os.path.join(mesh, "faces"))
-    areas, volume = {}, 0.0
-    boundary = read_boundary(os.path.join(mesh, "boundary"))
-    for name, (start, n) in boundary.items():
-        area = 0.0
-        for face in faces[start:start + n]:
-            a = points[face[0]]
-            for i in range(1, len(face) - 1):
-                b, c = points[face[i]], points[face[i + 1]]
-                area += 0.5*np.linalg.norm(np.cross(b - a, c - a))
-                volume += np.dot(a, np.cross(b, c))/6
-        areas[name] = area
-    return areas, volume
 
 
 def read_all_runs(case, cloud, name):
@@ -282,7 +220,7 @@ def deposition_velocity(case=".", cloud="kinematicCloud", windows=1,
     stats = _injectors_once(read_all_runs(case, cloud, "statistics.dat"))
     grade = _injectors_once(read_all_runs(case, cloud, "gradeEfficiency.dat"))
     if areas is None or volume is None:
-        mesh_areas, mesh_volume = areas_and_volume(case)
+        mesh_areas, mesh_volume = polymesh.areas_and_volume(case)
         areas = areas if areas is not None else mesh_areas
         volume = volume if volume is not None else mesh_volume
     steady = True
@@ -298,6 +236,38 @@ def deposition_velocity(case=".", cloud="kinematicCloud", windows=1,
         rows += window_rows(stats, grade, areas, volume, float(a), float(b),
                             concentration)
     return rows, steady
+
+
+def uniformity(case, cloud, patches, t_start, t_end):
+    """(ratio, its standard error, parcels) of the airborne concentration
+    in the cells on the patches to the mean, over the parcels written in
+    the time folders in (t_start, t_end] (their 'positions' files:
+    '(x y z) cell' a line); None without such folders or parcels. The
+    standard error is the binomial one of the parcels in those cells."""
+    cells = np.zeros(0, dtype=int)
+    for name in os.listdir(case):
+        if not tables.is_number(name) or not t_start < float(name) <= t_end:
+            continue
+        path = os.path.join(case, name, "lagrangian", cloud, "positions")
+        if os.path.isfile(path):
+            with open(path) as handle:
+                found = re.findall(r"\)\s+(\d+)", handle.read())
+            cells = np.concatenate([cells, np.array(found, dtype=int)])
+    if not len(cells):
+        return None
+    volumes = polymesh.cell_volumes(case)
+    near = np.array(polymesh.cells_on(case, patches), dtype=int)
+    share = volumes[near].sum()/volumes.sum()
+    inside = np.isin(cells, near).sum()
+    n = len(cells)
+    ratio = (inside/share)/n
+    return ratio, np.sqrt(share*(1 - share)/n)/share, n
+
+
+def far_from_uniform(ratio, error):
+    """Whether a uniformity ratio is outside [1/2, 2] beyond 3 standard
+    errors."""
+    return (ratio < 0.5 or ratio > 2) and abs(ratio - 1) > 3*error
 
 
 def _options(arguments):
@@ -324,9 +294,9 @@ def _options(arguments):
 def run(arguments):
     """adhesiveWallPost depositionVelocity CASE [CLOUD] [-windows N]
     [-start TIME] [-concentration C]: the rows as CSV on standard output;
-    the spin-up's end and whether it was found steady on standard error;
-    bad input in one line (exit status 1)."""
-    import sys
+    the spin-up's end and whether it was found steady, and a warning where
+    the airborne profile is far from uniform, on standard error; bad input
+    in one line (exit status 1)."""
     try:
         case, cloud, options = _options(arguments)
         rows, steady = deposition_velocity(case, cloud, **options)
@@ -337,6 +307,14 @@ def run(arguments):
         print(f"from {rows[0][3]} s" + ("" if steady else
               ": no steady deposition rate found in the first half of the"
               " run; the second half used"), file=sys.stderr)
+        walls = sorted({row[0] for row in rows})
+        found = uniformity(case, cloud, walls, rows[0][3], rows[-1][4])
+        if found and far_from_uniform(found[0], found[1]):
+            print(f"warning: the airborne concentration in the cells on "
+                  f"{' '.join(walls)} is {found[0]:.3g} +- {found[1]:.2g} "
+                  f"times the mean ({found[2]} parcels written): V_d as a "
+                  f"volume mean's is not that of the concentration near "
+                  f"the walls", file=sys.stderr)
     print(",".join(COLUMNS))
     for row in rows:
         print(",".join(str(v) for v in row))
