@@ -192,7 +192,7 @@ Foam::NearWallDispersionForce<CloudType>::flowAt
     const vector& gradK = gradK_()[celli];
     return
     {
-        uStar > 0 ? y*uStar/nu : 0,
+        y*uStar/nu,
         uStar,
         nu,
         max(kCell + (gradK & offset), 1e-3*kCell),
@@ -287,8 +287,16 @@ Foam::forceSuSp Foam::NearWallDispersionForce<CloudType>::calcNonCoupled
     );
     const scalar tauP = this->owner().forces().massEff(p, td, mass)/Sp;
     brachDunn::WallFrame frame;
-    const brachDunn::PathStep walked =
-        walk(p, flowAt(p, td, muc, tauP, frame), frame, tauP);
+    const brachDunn::FlowAtParticle flow = flowAt(p, td, muc, tauP, frame);
+    if (!(flow.uStar > 0))
+    {
+        FatalErrorInFunction
+            << "nearWallDispersion works in wall units: the carrier's "
+            << "friction velocity at the wall nearest to cell " << p.cell()
+            << " (parcel " << p.origId() << ") is " << flow.uStar
+            << " (no shear at that wall)" << exit(FatalError);
+    }
+    const brachDunn::PathStep walked = walk(p, flow, frame, tauP);
     value.Su() = Sp*toFoam(frame.global(walked.meanFluctuation));
 
     // The sub-step that completes the step keeps the end's w for the next
