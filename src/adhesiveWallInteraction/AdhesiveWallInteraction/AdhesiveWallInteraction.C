@@ -36,10 +36,9 @@ void Foam::AdhesiveWallInteraction<CloudType>::count
         p, impact.outcome, pp.index(), facei, faceProc,
         time.value() - (1 - p.stepFraction())*time.deltaTValue(),
         outputs_->needsPositions()
-      ? compat::position(p, this->owner().mesh()) : point(Zero)
+      ? compat::position(p, this->owner().mesh()) : point(Zero),
+        impact, 0, via
     );
-    e.impact = impact;
-    e.via = via;
     if (resuspension_ && impact.outcome == Fate::capture)
     {
         // A deposit that may leave is credited to its site

@@ -180,7 +180,7 @@ Foam::scalar Foam::AdhesiveWallSurfaceContact<CloudType>::reach
 
 
 template<class CloudType>
-void Foam::AdhesiveWallSurfaceContact<CloudType>::touch
+inline void Foam::AdhesiveWallSurfaceContact<CloudType>::touch
 (
     typename CloudType::parcelType& p,
     const scalar dt,

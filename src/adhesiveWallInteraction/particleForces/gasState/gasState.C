@@ -190,3 +190,21 @@ Foam::aerosolForces::readSlipCoefficients(const dictionary& dict)
         dict, [&]{ return brachDunn::slipCoefficients(name); }
     );
 }
+
+
+void Foam::aerosolForces::stopWithoutDrag
+(
+    const char* force,
+    const label origId,
+    const scalar Sp
+)
+{
+    FatalErrorInFunction
+        << force << " needs a drag (sphereDrag, slipSphereDrag, or another "
+        << "implicit coupled force) in particleForces: the friction of "
+        << "parcel " << origId << " is " << Sp << nl
+        << exit(FatalError);
+}
+
+
+// ************************************************************************* //

@@ -182,13 +182,15 @@ void Foam::WallResuspension<CloudType>::release
     wallEventSink& outputs
 )
 {
-    wallEvent e = wallInteractionCloud::parcelEvent
+    outputs.add
     (
-        p, brachDunn::Fate::resuspension, s.patchi, s.facei, s.proc,
-        owner_.mesh().time().value(), position
+        wallInteractionCloud::parcelEvent
+        (
+            p, brachDunn::Fate::resuspension, s.patchi, s.facei, s.proc,
+            owner_.mesh().time().value(), position, wallImpact(),
+            frictionVelocity, wallEvent::contact::none
+        )
     );
-    e.frictionVelocity = frictionVelocity;
-    outputs.add(e);
 
     // Airborne again, at rest, clear of the wall it sat on
     compat::setActive(p, true);
