@@ -10,8 +10,9 @@ expected values by hand: V_d = N/(A dt C), C = n/V:
     class 2 over (3, 10]: 700 x 0.5/(2 x 7 x 250) = 0.1 m/s, 700 parcels;
 the concentration constant, so the standard error is V_d/sqrt(parcels).
 The uniformity check on the box as 4 cells along z: parcels written 100 a
-cell (ratio 1) and 300 of 400 in the floor's cell (3, its binomial SE
-sqrt(p (1 - p)/n)/p with p = 1/4)."""
+cell (ratio 1), 300 of 400 in the floor's cell (3), and 200 of 400 active
+ones there beside 200 inactive (2); the binomial SE sqrt(f (1 - f)/n)/s of
+the fraction f found, s = 1/4 the cell's volume share."""
 
 import math
 import os
@@ -172,8 +173,9 @@ def test_no_capture_gives_zero_with_one_captures_error(case):
     rows, _ = deposition.deposition_velocity(case, start=0.0, windows=10)
     first = dict(zip(deposition.COLUMNS, rows[0]))  # class 1, (0, 1] s
     assert first["Vd"] == 0
-    # one capture's V_d: 1/(A dt C), C = 1000/0.5 per m^3
-    assert first["VdSE"] == pytest.approx(1/(2*1*2000), rel=1e-12)
+    # one parcel's capture (2 particles) as V_d: 2/(A dt C), C = 1000/0.5
+    # per m^3
+    assert first["VdSE"] == pytest.approx(2/(2*1*2000), rel=1e-12)
 
 
 def test_chi2_quantile_against_tables():
@@ -234,14 +236,22 @@ def write_column(case, layers=4):
                 % (n_internal, len(walls), n_internal + 1))
 
 
-def write_parcels(case, time, per_cell):
+def write_parcels(case, time, per_cell, inactive=()):
+    """Parcels written at a time, per_cell[i] in cell i, the first
+    inactive[i] of them inactive (captured, kept at the wall)."""
     folder = os.path.join(case, time, "lagrangian", "kinematicCloud")
     os.makedirs(folder, exist_ok=True)
     lines = ["(1 0.5 0.1) %d" % cell
              for cell, n in enumerate(per_cell) for _ in range(n)]
+    off = list(inactive) + [0]*len(per_cell)
+    active = [0 if k < off[cell] else 1
+              for cell, n in enumerate(per_cell) for k in range(n)]
     with open(os.path.join(folder, "positions"), "w") as f:
         f.write(HEADER % "Cloud<basicKinematicCollidingParcel>"
                 + "\n%d\n(\n" % len(lines) + "\n".join(lines) + "\n)\n")
+    with open(os.path.join(folder, "active"), "w") as f:
+        f.write(HEADER % "labelField" + "\n%d\n(\n" % len(active)
+                + "\n".join(map(str, active)) + "\n)\n")
 
 
 def test_cell_volumes_and_cells_on(tmp_path):
@@ -263,16 +273,32 @@ def test_uniformity_of_the_airborne_parcels(tmp_path):
     ratio, error, n = deposition.uniformity(case, "kinematicCloud",
                                             ["floor"], 3, 5)
     assert (ratio, n) == (pytest.approx(1.0), 400)
-    # SE: sqrt(p (1 - p)/n)/p, p = 1/4
+    # SE: sqrt(f (1 - f)/n)/s, f the fraction found there, s = 1/4
     assert error == pytest.approx(math.sqrt(0.25*0.75/400)/0.25)
+    assert not deposition.far_from_uniform(ratio, error)
+    # half of the airborne parcels at the floor (200 of 400 written, 200
+    # more there inactive: captured): ratio 2, SE sqrt(0.25/200)/0.25
+    write_parcels(case, "9", [400, 100, 50, 50], inactive=[200])
+    ratio, error, n = deposition.uniformity(case, "kinematicCloud",
+                                            ["floor"], 8.5, 9.5)
+    assert (ratio, n) == (pytest.approx(2.0), 400)
+    assert error == pytest.approx(math.sqrt(0.25/400)/0.25)
     assert not deposition.far_from_uniform(ratio, error)
     # gathered at the floor: 300 of 400 in a quarter of the volume
     ratio, error, n = deposition.uniformity(case, "kinematicCloud",
-                                            ["floor"], 5, 10)
+                                            ["floor"], 5, 8.5)
     assert ratio == pytest.approx(3.0)
     assert deposition.far_from_uniform(ratio, error)
     assert deposition.uniformity(case, "kinematicCloud", ["floor"],
                                  10, 20) is None
+
+
+def test_far_from_uniform_beyond_three_errors_of_the_band():
+    assert not deposition.far_from_uniform(2.1, 0.3)
+    assert deposition.far_from_uniform(2.1, 0.01)
+    assert deposition.far_from_uniform(0.4, 0.01)
+    assert not deposition.far_from_uniform(0.45, 0.1)
+    assert not deposition.far_from_uniform(1.0, 0.0)
 
 
 def test_command_line_warns_of_a_gathered_profile(tmp_path, capsys):

@@ -16,7 +16,7 @@ the same number of particles each: relative error 1/sqrt(captureParcels));
 the concentration's from the means of up to 10 consecutive batches of its
 rows (their standard deviation over sqrt(batches)); the two relative
 errors combined in quadrature. A window without captures reports 0 with
-the error of one capture.
+the error of one parcel's capture.
 
 Spin-up: the run from time 0 to its last row is cut into 10 blocks of
 equal length; the deposition rate per airborne particle of all patches
@@ -32,8 +32,10 @@ Uniformity: V_d as J/C assumes the airborne concentration uniform over the
 cross-section; where the parcels gather near the walls or away from them,
 the volume mean is not the concentration that drives deposition. The
 airborne parcels written in the window's time folders (their cells) give
-the concentration in the cells on the capturing walls against the mean;
-a ratio outside [1/2, 2] beyond 3 binomial standard errors is warned of.
+the concentration in the cells on the capturing walls against the mean
+(captured parcels that stay in the cloud, inactive, are not counted); a
+ratio outside [1/2, 2] by more than 3 binomial standard errors is warned
+of.
 
 References:
     Wilson, E.B. and Hilferty, M.M. (1931). The distribution of
@@ -47,6 +49,7 @@ import sys
 
 import numpy as np
 
+from . import foam
 from . import polymesh
 from . import statistics
 from . import tables
@@ -106,13 +109,14 @@ def _injectors_once(table):
     return table
 
 
-def _airborne(grade, d_min, d_max, t_start, t_end):
-    """The airborne particles of a size class at each row time in
-    (tStart, tEnd], summed over the injectors."""
+def _airborne(grade, d_min, d_max, t_start, t_end,
+              column="airborneParticles"):
+    """The airborne particles (or parcels) of a size class at each row time
+    in (tStart, tEnd], summed over the injectors."""
     rows = grade.where(dMin=d_min, dMax=d_max,
                        time=lambda t: t_start < float(t) <= t_end)
     per_time = {}
-    for t, n in zip(rows["time"], rows["airborneParticles"]):
+    for t, n in zip(rows["time"], rows[column]):
         per_time[t] = per_time.get(t, 0.0) + n
     return np.array([per_time[t] for t in sorted(per_time)])
 
@@ -146,15 +150,21 @@ def window_rows(stats, grade, areas, volume, t_start, t_end,
                 - _total_at(stats, c, t_start, **select)
                 for c in ("captureParcels", "captureParticles"))
             airborne = _airborne(grade, d_min, d_max, t_start, t_end)
+            carriers = _airborne(grade, d_min, d_max, t_start, t_end,
+                                 "airborneParcels")
+            per_parcel = (airborne.sum()/carriers.sum()
+                          if carriers.sum() > 0 else 1.0)
             rows.append(_row(patch, d_min, d_max, t_start, t_end, parcels,
                              particles, airborne, areas[patch], volume,
-                             concentration))
+                             concentration, per_parcel))
     return rows
 
 
 def _row(patch, d_min, d_max, t_start, t_end, parcels, particles,
-         airborne, area, volume, concentration):
-    """One row: V_d and its standard error (module's description)."""
+         airborne, area, volume, concentration, per_parcel):
+    """One row: V_d and its standard error (module's description);
+    per_parcel the class's particles per airborne parcel (the error of a
+    window without captures is one parcel's)."""
     mean = float(airborne.mean()) if len(airborne) else 0.0
     if concentration is None:
         c = mean/volume
@@ -165,7 +175,7 @@ def _row(patch, d_min, d_max, t_start, t_end, parcels, particles,
         return [patch, d_min, d_max, t_start, t_end, parcels, particles,
                 mean, c, float("nan"), float("nan")]
     flux = particles/(area*(t_end - t_start))
-    per_capture = 1/(area*(t_end - t_start)*c)
+    per_capture = per_parcel/(area*(t_end - t_start)*c)
     vd = flux/c
     n_error = 1/math.sqrt(parcels) if parcels > 0 else 0.0
     if parcels > 0:
@@ -238,36 +248,50 @@ def deposition_velocity(case=".", cloud="kinematicCloud", windows=1,
     return rows, steady
 
 
+def _airborne_cells(case, cloud, time):
+    """The cells of the airborne (active) parcels written at a time: the
+    'positions' file's '(x y z) cell' lines, less the parcels the 'active'
+    field marks 0 (captured parcels kept at the wall)."""
+    folder = os.path.join(case, time, "lagrangian", cloud)
+    with open(os.path.join(folder, "positions")) as handle:
+        cells = np.array(re.findall(r"\)\s+(\d+)", handle.read()), dtype=int)
+    if os.path.isfile(os.path.join(folder, "active")):
+        active = np.array(foam.list_file(os.path.join(folder, "active")),
+                          dtype=float)
+        if len(active) == len(cells):
+            cells = cells[active != 0]
+    return cells
+
+
 def uniformity(case, cloud, patches, t_start, t_end):
     """(ratio, its standard error, parcels) of the airborne concentration
-    in the cells on the patches to the mean, over the parcels written in
-    the time folders in (t_start, t_end] (their 'positions' files:
-    '(x y z) cell' a line); None without such folders or parcels. The
-    standard error is the binomial one of the parcels in those cells."""
+    in the cells on the patches to the mean, over the airborne parcels
+    written in the time folders in (t_start, t_end]; None without such
+    folders or parcels. The standard error is the binomial one of the
+    fraction of the parcels found in those cells, over their volume
+    share."""
     cells = np.zeros(0, dtype=int)
     for name in os.listdir(case):
         if not tables.is_number(name) or not t_start < float(name) <= t_end:
             continue
-        path = os.path.join(case, name, "lagrangian", cloud, "positions")
-        if os.path.isfile(path):
-            with open(path) as handle:
-                found = re.findall(r"\)\s+(\d+)", handle.read())
-            cells = np.concatenate([cells, np.array(found, dtype=int)])
+        if os.path.isfile(os.path.join(case, name, "lagrangian", cloud,
+                                       "positions")):
+            cells = np.concatenate(
+                [cells, _airborne_cells(case, cloud, name)])
     if not len(cells):
         return None
     volumes = polymesh.cell_volumes(case)
     near = np.array(polymesh.cells_on(case, patches), dtype=int)
     share = volumes[near].sum()/volumes.sum()
-    inside = np.isin(cells, near).sum()
     n = len(cells)
-    ratio = (inside/share)/n
-    return ratio, np.sqrt(share*(1 - share)/n)/share, n
+    found = np.isin(cells, near).sum()/n
+    return found/share, np.sqrt(found*(1 - found)/n)/share, n
 
 
 def far_from_uniform(ratio, error):
-    """Whether a uniformity ratio is outside [1/2, 2] beyond 3 standard
-    errors."""
-    return (ratio < 0.5 or ratio > 2) and abs(ratio - 1) > 3*error
+    """Whether a uniformity ratio lies outside [1/2, 2] by more than 3
+    standard errors."""
+    return ratio - 3*error > 2 or ratio + 3*error < 0.5
 
 
 def _options(arguments):

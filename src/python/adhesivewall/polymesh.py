@@ -105,7 +105,8 @@ def cell_volumes(case):
     points, faces = _points_and_faces(case)
     owner = read_labels(os.path.join(_folder(case), "owner"))
     neighbour = read_labels(os.path.join(_folder(case), "neighbour"))
-    volumes = np.zeros(max(owner) + 1)
+    # (the last cells may own no face: count them from the neighbours too)
+    volumes = np.zeros(max(owner + neighbour) + 1)
     for i, face in enumerate(faces):
         a = points[face[0]]
         v = sum(np.dot(a, np.cross(points[face[k]], points[face[k + 1]]))
