@@ -120,23 +120,6 @@ void Foam::ExactBrownianMotionForce<CloudType>::checkCloud
         }
     }
 
-    // Moved in sub-cycles of the time step (a colliding cloud's collision
-    // subCycles): a sub-cycle would complete the step of the draws
-    const scalar moved = this->owner().db().time().deltaTValue();
-    if
-    (
-        this->owner().solution().transient()
-     && mag(moved - trackTime) > 1e-12*trackTime
-    )
-    {
-        FatalErrorInFunction
-            << "exactBrownianMotion: the parcels are moved over " << moved
-            << " s at a time, not over the cloud's time step " << trackTime
-            << " s: the collision model moves them in sub-cycles, and the"
-            << " Brownian step is drawn for whole time steps (use"
-            << " collisionModel none)" << nl
-            << exit(FatalError);
-    }
     if (drawTrackTime_ < 0)
     {
         drawTrackTime_ = trackTime;
@@ -221,6 +204,10 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
     {
         checkCloud(trackTime);
     }
+    // Moved in sub-cycles of the time step (a colliding cloud's collision
+    // subCycles; every call: it may move its parcels over whole steps
+    // first): a sub-cycle would complete the step of the draws
+    aerosolForces::checkWholeSteps(this->owner(), "exactBrownianMotion");
 
     // The parcel's state: its tTurb counts the draws (drawsTaken) and its
     // UTurb holds the velocity V0 the current draw starts from

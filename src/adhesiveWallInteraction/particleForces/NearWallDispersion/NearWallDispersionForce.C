@@ -281,6 +281,9 @@ Foam::forceSuSp Foam::NearWallDispersionForce<CloudType>::calcNonCoupled
     {
         checkCloud();
     }
+    // Every call: a colliding cloud may move its parcels over whole steps
+    // (its first use) before it moves them in collision sub-cycles
+    aerosolForces::checkWholeSteps(this->owner(), "nearWallDispersion");
     const scalar Sp = aerosolForces::dragFriction
     (
         this->owner(), p, td, dt, mass, Re, muc, "nearWallDispersion"

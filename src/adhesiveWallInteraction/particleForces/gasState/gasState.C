@@ -207,4 +207,20 @@ void Foam::aerosolForces::stopWithoutDrag
 }
 
 
+void Foam::aerosolForces::stopInSubCycles
+(
+    const char* force,
+    const scalar moved,
+    const scalar trackTime
+)
+{
+    FatalErrorInFunction
+        << force << ": the parcels are moved over " << moved
+        << " s at a time, not over the cloud's time step " << trackTime
+        << " s: the collision model moves them in sub-cycles, and "
+        << force << " draws its random numbers for whole time steps (use "
+        << "collisionModel none)" << nl << exit(FatalError);
+}
+
+
 // ************************************************************************* //
