@@ -10,6 +10,8 @@ nut 0 at the walls.
     channel.py mesh          system/blockMeshDict
     channel.py fields N      0/U, k, epsilon, nut (after writeCellCentres)
                              and N tracer positions uniform in the channel
+    channel.py lower N       N tracer positions uniform in the lower half
+                             (below y+ 176: one processor's of two)
     channel.py bins TIME     the concentration relative to the mean and its
                              binomial SE per wall-distance bin (y+ 0-1, 1-3,
                              3-10, 10-30, 30-60, 60-100, 100-180), both
@@ -109,12 +111,17 @@ def fields(n):
                 [repr(v) for v in eps], fixed % "1e-12")
     write_field("nut", "volScalarField", "[0 2 -1 0 0 0 0]",
                 [repr(0.09*a*a/b) for a, b in zip(k, eps)], fixed % "0")
+    positions(n, 2*DELTA)
+
+
+def positions(n, top):
+    """constant/positions: n tracers uniform in the channel below y = top"""
     rng = random.Random(3)
     with open("constant/positions", "w") as f:
         f.write(HEADER % ("vectorField", "positions") + "%d\n(\n" % n)
         for _ in range(n):
             f.write("(%r %r %r)\n" % (rng.uniform(0, LX),
-                                      rng.uniform(0, 2*DELTA),
+                                      rng.uniform(0, top),
                                       rng.uniform(0, LZ)))
         f.write(")\n")
 
@@ -131,4 +138,5 @@ def bins(time):
 
 if __name__ == "__main__":
     {"mesh": lambda: mesh(), "fields": lambda: fields(int(sys.argv[2])),
+     "lower": lambda: positions(int(sys.argv[2]), 0.98*DELTA),
      "bins": lambda: bins(sys.argv[2])}[sys.argv[1]]()

@@ -85,7 +85,8 @@ Foam::NearWallDispersionForce<CloudType>::NearWallDispersionForce
     settings_(f.settings_),
     path_(f.path_),
     units_(nullptr),
-    checked_(false)
+    checked_(false),
+    walks_()
 {}
 
 
@@ -119,6 +120,7 @@ void Foam::NearWallDispersionForce<CloudType>::checkCloud() const
 template<class CloudType>
 void Foam::NearWallDispersionForce<CloudType>::cacheFields(const bool store)
 {
+    walks_.clear();
     if (!store)
     {
         k_.clear();
@@ -261,6 +263,39 @@ brachDunn::PathStep Foam::NearWallDispersionForce<CloudType>::walk
 
 
 template<class CloudType>
+const brachDunn::PathStep&
+Foam::NearWallDispersionForce<CloudType>::walkOfSubStep
+(
+    const typename CloudType::parcelType& p,
+    const scalar dt,
+    const brachDunn::FlowAtParticle& flow,
+    const brachDunn::WallFrame& frame,
+    const scalar tauP
+) const
+{
+    const std::uint64_t key =
+        (static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.origProc()))
+        << 32)
+      | static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.origId()));
+    const scalar trackTime = this->owner().solution().trackTime();
+    const scalar startFraction = p.stepFraction() - dt/trackTime;
+    auto found = walks_.find(key);
+    if
+    (
+        found == walks_.end()
+     || found->second.cell != p.cell()
+     || mag(found->second.endFraction - startFraction) > 1e-12
+    )
+    {
+        lastWalk last{p.cell(), 0, walk(p, flow, frame, tauP)};
+        found = walks_.insert_or_assign(key, last).first;
+    }
+    found->second.endFraction = p.stepFraction();
+    return found->second.walked;
+}
+
+
+template<class CloudType>
 Foam::forceSuSp Foam::NearWallDispersionForce<CloudType>::calcNonCoupled
 (
     const typename CloudType::parcelType& p,
@@ -299,7 +334,8 @@ Foam::forceSuSp Foam::NearWallDispersionForce<CloudType>::calcNonCoupled
             << " (parcel " << p.origId() << ") is " << flow.uStar
             << " (no shear at that wall)" << exit(FatalError);
     }
-    const brachDunn::PathStep walked = walk(p, flow, frame, tauP);
+    const brachDunn::PathStep& walked =
+        walkOfSubStep(p, dt, flow, frame, tauP);
     value.Su() = Sp*toFoam(frame.global(walked.meanFluctuation));
 
     // The sub-step that completes the step keeps the end's w for the next
