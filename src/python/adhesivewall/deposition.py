@@ -18,13 +18,22 @@ rows (their standard deviation over sqrt(batches)); the two relative
 errors combined in quadrature. A window without captures reports 0 with
 the error of one parcel's capture.
 
+Where the class's airborne count changes in the window only by its
+captures (nothing injected, escaped or removed: a closed or periodic
+domain whose parcels were all injected before), the concentration is
+counted, not sampled: its error is none, and a decaying population
+(captures deplete it) is not taken for a fluctuating one.
+
 Spin-up: the run from time 0 to its last row is cut into 10 blocks of
-equal length; the deposition rate per airborne particle of all patches
-and size classes together is taken per block; the spin-up ends at the
-first block k (k at most 5) from which the blocks' rates are consistent
+equal length; per size class, the deposition rate per airborne particle
+of all patches together is taken per block (a constant where the class
+is steady, and also where captures deplete it, as in a closed pipe); a
+class's spin-up ends at the first block k (k at most 5) from which its
+blocks' rates, over the blocks with airborne particles, are consistent
 with one constant: their chi-square about their weighted mean below its
-99th percentile (Wilson & Hilferty's approximation, z = 2.326). Where no
-such k exists the second half is used, and the result says so.
+99th percentile (Wilson & Hilferty's approximation, z = 2.326). The
+spin-up is the latest of the classes'. Where a class has no such k the
+second half is used, and the result says so.
 
 Areas and volume come from the case's constant/polyMesh (polymesh.py).
 
@@ -121,6 +130,18 @@ def _airborne(grade, d_min, d_max, t_start, t_end,
     return np.array([per_time[t] for t in sorted(per_time)])
 
 
+def _counted(grade, d_min, d_max, t_start, t_end):
+    """Whether the class's airborne particles change in (t_start, t_end]
+    only by captures: its injected, escaped and removed particles the same
+    at both ends (False without those columns)."""
+    names = ("injectedParticles", "escapedParticles", "removedParticles")
+    if not all(name in grade for name in names):
+        return False
+    rows = grade.where(dMin=d_min, dMax=d_max)
+    return all(_total_at(rows, name, t_end) == _total_at(rows, name, t_start)
+               for name in names)
+
+
 def _batch_error(values):
     """The standard error of the mean of a series from the means of up to
     10 consecutive batches (0 with fewer than 2 values)."""
@@ -156,19 +177,22 @@ def window_rows(stats, grade, areas, volume, t_start, t_end,
                           if carriers.sum() > 0 else 1.0)
             rows.append(_row(patch, d_min, d_max, t_start, t_end, parcels,
                              particles, airborne, areas[patch], volume,
-                             concentration, per_parcel))
+                             concentration, per_parcel,
+                             _counted(grade, d_min, d_max, t_start, t_end)))
     return rows
 
 
 def _row(patch, d_min, d_max, t_start, t_end, parcels, particles,
-         airborne, area, volume, concentration, per_parcel):
+         airborne, area, volume, concentration, per_parcel, counted=False):
     """One row: V_d and its standard error (module's description);
     per_parcel the class's particles per airborne parcel (the error of a
-    window without captures is one parcel's)."""
+    window without captures is one parcel's); counted where the airborne
+    count changes only by captures (_counted: no error of its own)."""
     mean = float(airborne.mean()) if len(airborne) else 0.0
     if concentration is None:
         c = mean/volume
-        c_error = _batch_error(airborne)/mean if mean > 0 else 0.0
+        c_error = (_batch_error(airborne)/mean
+                   if mean > 0 and not counted else 0.0)
     else:
         c, c_error = concentration, 0.0
     if not c > 0:
@@ -193,32 +217,48 @@ def chi2_quantile99(dof):
     return dof*(1 - 2/(9*dof) + z*math.sqrt(2/(9*dof)))**3
 
 
-def spin_up(stats, grade):
-    """(the end of the spin-up [s], whether the blocks after it are
-    steady): module's description; the tables with each particle once
-    (_injectors_once)."""
-    t_last = float(stats["time"].max())
-    edges = np.linspace(0.0, t_last, BLOCKS + 1)
-    captured, airborne_rows = stats, grade
-    rates, errors = [], []
-    for a, b in zip(edges[:-1], edges[1:]):
-        parcels = (_total_at(captured, "captureParcels", b)
-                   - _total_at(captured, "captureParcels", a))
-        n = airborne_rows.where(time=lambda t: a < float(t) <= b)
-        mean = n.sum("airborneParcels")/max(len(n.unique("time")), 1)
-        scale = 1/(mean*(b - a)) if mean > 0 else 0.0
-        rates.append(parcels*scale)
-        errors.append(math.sqrt(max(parcels, 1.0))*scale)
-    rates, errors = np.array(rates), np.array(errors)
+def _first_steady_block(rates, errors):
+    """The first block k (at most BLOCKS//2) from which the rates are
+    consistent with one constant (chi-square below its 99th percentile),
+    over the blocks with airborne particles (error > 0); None if none."""
     for k in range(BLOCKS//2 + 1):
         r, e = rates[k:], errors[k:]
-        if not np.all(e > 0):
-            continue
+        r, e = r[e > 0], e[e > 0]
+        if len(r) < 2:
+            return k if len(r) else None
         w = 1/e**2
         mean = float((w*r).sum()/w.sum())
         if float((((r - mean)/e)**2).sum()) < chi2_quantile99(len(r) - 1):
-            return float(edges[k]), True
-    return float(edges[BLOCKS//2]), False
+            return k
+    return None
+
+
+def spin_up(stats, grade):
+    """(the end of the spin-up [s], whether the blocks after it are
+    steady): module's description, per size class (the latest of the
+    classes' ends; steady where every class is); the tables with each
+    particle once (_injectors_once)."""
+    t_last = float(stats["time"].max())
+    edges = np.linspace(0.0, t_last, BLOCKS + 1)
+    last = 0
+    for d_min, d_max in _classes(stats):
+        captured = stats.where(dMin=d_min, dMax=d_max)
+        airborne_rows = grade.where(dMin=d_min, dMax=d_max)
+        rates, errors = [], []
+        for a, b in zip(edges[:-1], edges[1:]):
+            parcels = (_total_at(captured, "captureParcels", b)
+                       - _total_at(captured, "captureParcels", a))
+            n = airborne_rows.where(time=lambda t: a < float(t) <= b)
+            mean = (n.sum("airborneParcels")/len(n.unique("time"))
+                    if len(n) else 0.0)
+            scale = 1/(mean*(b - a)) if mean > 0 else 0.0
+            rates.append(parcels*scale)
+            errors.append(math.sqrt(max(parcels, 1.0))*scale)
+        k = _first_steady_block(np.array(rates), np.array(errors))
+        if k is None:
+            return float(edges[BLOCKS//2]), False
+        last = max(last, k)
+    return float(edges[last]), True
 
 
 def deposition_velocity(case=".", cloud="kinematicCloud", windows=1,
