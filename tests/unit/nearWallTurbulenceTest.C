@@ -130,6 +130,24 @@ TEST(NearWallTurbulence, CrossingTrajectoriesShortenTheTimeSeen)
 }
 
 
+TEST(NearWallTurbulence, CrossingTimesKeepTheWallsVelocityScale)
+{
+    // At y+ 0.01 the mean rms is about 0.003 u*: a slip of 0.02 u* would
+    // shorten the times some tenfold with it; with u* as the rms's floor,
+    // xi = 0.02 and T_n = T_L/sqrt(1 + 4 0.64 0.0004) (0.05 % shorter).
+    // Nearer still (y+ 1e-170: the rms's square underflows) the times
+    // stay those of the floor, finite and positive
+    const NearWallSettings settings;
+    for (const double yPlus : {0.01, 1e-170})
+    {
+        FlowAtParticle flow{yPlus, 1, 1, 1e-6, 1e-6, {0, 0, 0}, {0.02, 0, 0}};
+        const SeenStatistics s = seenStatistics(flow, settings);
+        EXPECT_NEAR(s.T.y, s.TL/std::sqrt(1 + 4*0.64*0.0004), 1e-12*s.TL);
+        EXPECT_NEAR(s.T.x, s.TL/std::sqrt(1 + 0.64*0.0004), 1e-12*s.TL);
+    }
+}
+
+
 TEST(NearWallTurbulence, BadInputNamesItsKeyword)
 {
     const NearWallSettings settings;

@@ -32,16 +32,18 @@ constexpr double fitsTo = 100;
 
 //- The integral times of the fluid seen along crossing trajectories
 //  (Csanady 1963; NearWallTurbulence.H): per component of the wall's
-//  frame, TL/sqrt(1 + (4 - 3 cos^2) b^2 xi^2), xi = |slip|/(mean rms)
+//  frame, TL/sqrt(1 + (4 - 3 cos^2) b^2 xi^2), xi = |slip|/(mean rms),
+//  the mean rms taken as at least uStar
 Vector3 crossingTimes
 (
     const Vector3& sigma,
     const double TL,
     const Vector3& slip,
-    const double b
+    const double b,
+    const double uStar
 )
 {
-    const double mean = std::sqrt(dot(sigma, sigma)/3);
+    const double mean = std::max(std::sqrt(dot(sigma, sigma)/3), uStar);
     const double u = mag(slip);
     const double xi2 = mean > 0 ? u*u/(mean*mean) : 0;
     const auto seen = [&](double along)
@@ -166,7 +168,10 @@ SeenStatistics seenStatistics
     };
     stats.TL = (1 - b)*fitTime + b*ransTime;
 
-    stats.T = crossingTimes(stats.sigma, stats.TL, flow.slip, settings.crossing);
+    stats.T = crossingTimes
+    (
+        stats.sigma, stats.TL, flow.slip, settings.crossing, flow.uStar
+    );
     return stats;
 }
 

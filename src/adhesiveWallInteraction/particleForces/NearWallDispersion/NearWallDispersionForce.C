@@ -211,7 +211,8 @@ brachDunn::PathStep Foam::NearWallDispersionForce<CloudType>::walk
     const typename CloudType::parcelType& p,
     brachDunn::FlowAtParticle flow,
     const brachDunn::WallFrame& frame,
-    const scalar tauP
+    const scalar tauP,
+    const scalar normalVelocity
 ) const
 {
     using namespace nearWallDispersion;
@@ -254,7 +255,8 @@ brachDunn::PathStep Foam::NearWallDispersionForce<CloudType>::walk
         {
             return brachDunn::seenVelocityPath
             (
-                {frame.local(toCore(w)), 0, tauP}, flow, settings_, path_,
+                {frame.local(toCore(w)), normalVelocity, tauP}, flow,
+                settings_, path_,
                 trackTime, random
             );
         }
@@ -270,7 +272,8 @@ Foam::NearWallDispersionForce<CloudType>::walkOfSubStep
     const scalar dt,
     const brachDunn::FlowAtParticle& flow,
     const brachDunn::WallFrame& frame,
-    const scalar tauP
+    const scalar tauP,
+    const scalar normalVelocity
 ) const
 {
     const std::uint64_t key =
@@ -287,7 +290,10 @@ Foam::NearWallDispersionForce<CloudType>::walkOfSubStep
      || mag(found->second.endFraction - startFraction) > 1e-12
     )
     {
-        lastWalk last{p.cell(), 0, walk(p, flow, frame, tauP)};
+        lastWalk last
+        {
+            p.cell(), 0, walk(p, flow, frame, tauP, normalVelocity)
+        };
         found = walks_.insert_or_assign(key, last).first;
     }
     found->second.endFraction = p.stepFraction();
@@ -334,8 +340,11 @@ Foam::forceSuSp Foam::NearWallDispersionForce<CloudType>::calcNonCoupled
             << " (parcel " << p.origId() << ") is " << flow.uStar
             << " (no shear at that wall)" << exit(FatalError);
     }
+    // The walk's own path of the parcel starts with its wall-normal
+    // velocity relative to the carrier (its inertia carries it on)
+    const scalar normalVelocity = frame.local(toCore(p.U() - td.Uc())).y;
     const brachDunn::PathStep& walked =
-        walkOfSubStep(p, dt, flow, frame, tauP);
+        walkOfSubStep(p, dt, flow, frame, tauP, normalVelocity);
     value.Su() = Sp*toFoam(frame.global(walked.meanFluctuation));
 
     // The sub-step that completes the step keeps the end's w for the next
