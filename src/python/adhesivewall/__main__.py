@@ -6,6 +6,7 @@ Commands:
   channelResuspension [CASE] Allrun.post): results.csv, log.table, plots
   fibreFilter [CASE]
   microsphereImpact [CASE]
+  pipeDeposition [CASE]
   settlingChannel [CASE]
   tubeDiffusion [CASE]
 
@@ -52,6 +53,8 @@ Commands:
                              (N speeds per diameter of figure5.csv)
   tubePositions [CASE]       tubeDiffusion's positions files (flux-weighted
                              over the inlet, one per injector)
+  pipePositions [CASE]       pipeDeposition's positions files (uniform in
+                             the pipe, one per injector)
   channelPositions [CASE]    channelResuspension's positions files (above
                              the floor, one per injector)
   channelTop [CASE]          channelResuspension's top wall speed at the
@@ -105,6 +108,10 @@ def main(argv=None):
     if command == "channelTop" and len(arguments) <= 1:
         from .tutorials import channel_resuspension
         channel_resuspension.set_top(*arguments)
+        return 0
+    if command == "pipePositions" and len(arguments) <= 1:
+        from .tutorials import pipe_deposition
+        pipe_deposition.write_positions(*arguments)
         return 0
     if command == "tubePositions" and len(arguments) <= 1:
         from .tutorials import tube_diffusion
@@ -165,6 +172,7 @@ TUTORIALS = {
     "channelResuspension": "channel_resuspension",
     "fibreFilter": "fibre_filter",
     "microsphereImpact": "microsphere_impact",
+    "pipeDeposition": "pipe_deposition",
     "settlingChannel": "settling_channel",
     "tubeDiffusion": "tube_diffusion",
 }

@@ -245,3 +245,30 @@ def settling_channel(settling_velocity, length, mean_velocity, height):
         raise ValueError(f"settling_channel: v_s {settling_velocity}, L "
                          f"{length}, U {mean_velocity}, H {height}")
     return min(1.0, settling_velocity * length / (mean_velocity * height))
+
+
+def liu_agarwal(tau_plus):
+    """Liu and Agarwal's fit to their deposition velocities of olive-oil
+    droplets from turbulent air in vertical glass tubes, in the
+    diffusion-impaction regime (tau+ up to about 20):
+
+        V+ = 6e-4 tau+^2,   V+ = V_d/u*,  tau+ = tau_p u*^2/nu
+
+    Liu, B.Y.H. and Agarwal, J.K. (1974), "Experimental observation of
+    aerosol deposition in turbulent flow", J. Aerosol Sci. 5:145-155."""
+    if tau_plus < 0:
+        raise ValueError(f"liu_agarwal: tau+ = {tau_plus}")
+    return 6e-4 * tau_plus ** 2
+
+
+def papavergos_hedley(tau_plus):
+    """Papavergos and Hedley's correlation of the published deposition
+    data in its diffusion-impaction regime (as NIST FDS implements it):
+
+        V+ = 3.5e-4 tau+^2
+
+    Papavergos, P.G. and Hedley, A.B. (1984), "Particle deposition
+    behaviour from turbulent flows", Chem. Eng. Res. Des. 62:275-295."""
+    if tau_plus < 0:
+        raise ValueError(f"papavergos_hedley: tau+ = {tau_plus}")
+    return 3.5e-4 * tau_plus ** 2
