@@ -7,6 +7,8 @@ Commands:
   fibreFilter [CASE]
   microsphereImpact [CASE]
   pipeDeposition [CASE]
+  pipeFlow [CASE]            pipeDeposition's flow against the law of the
+                             wall and the friction laws (Allrun.flow)
   settlingChannel [CASE]
   tubeDiffusion [CASE]
 
@@ -173,6 +175,7 @@ TUTORIALS = {
     "fibreFilter": "fibre_filter",
     "microsphereImpact": "microsphere_impact",
     "pipeDeposition": "pipe_deposition",
+    "pipeFlow": "pipe_flow",
     "settlingChannel": "settling_channel",
     "tubeDiffusion": "tube_diffusion",
 }

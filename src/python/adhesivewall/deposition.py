@@ -154,12 +154,13 @@ def _batch_error(values):
 
 
 def window_rows(stats, grade, areas, volume, t_start, t_end,
-                concentration=None):
-    """The rows (COLUMNS) of the window (tStart, tEnd]: every patch of
-    statistics.dat that captured something in the run (the walls), every
-    size class."""
-    walls = [p for p in stats.unique("patch")
-             if stats.last_time().where(patch=p).sum("captureParticles") > 0]
+                concentration=None, patches=None):
+    """The rows (COLUMNS) of the window (tStart, tEnd]: every patch named,
+    or of statistics.dat that captured something in the run (the walls),
+    every size class."""
+    walls = patches if patches is not None else [
+        p for p in stats.unique("patch")
+        if stats.last_time().where(patch=p).sum("captureParticles") > 0]
     rows = []
     for patch in walls:
         if patch not in areas:
@@ -263,10 +264,11 @@ def spin_up(stats, grade):
 
 def deposition_velocity(case=".", cloud="kinematicCloud", windows=1,
                         start=None, concentration=None, areas=None,
-                        volume=None):
+                        volume=None, patches=None):
     """The rows (COLUMNS) of `windows` equal windows from the end of the
     spin-up (or `start`) to the last row, and whether the spin-up's blocks
-    were steady (True where `start` is given)."""
+    were steady (True where `start` is given); the patches named, or those
+    that captured something."""
     stats = _injectors_once(read_all_runs(case, cloud, "statistics.dat"))
     grade = _injectors_once(read_all_runs(case, cloud, "gradeEfficiency.dat"))
     if areas is None or volume is None:
@@ -284,7 +286,7 @@ def deposition_velocity(case=".", cloud="kinematicCloud", windows=1,
     rows = []
     for a, b in zip(edges[:-1], edges[1:]):
         rows += window_rows(stats, grade, areas, volume, float(a), float(b),
-                            concentration)
+                            concentration, patches)
     return rows, steady
 
 
