@@ -94,3 +94,29 @@ def test_flow_checks_laws():
     pk = [v for k, v in f.items() if k.startswith("Prandtl")][0]
     assert pk == pytest.approx(0.0309, rel=2e-3)
     assert len(values) == 3
+
+
+def test_wall_distance_to_the_polygon():
+    # Against the distance to the line through the two vertices of the
+    # face the point faces (vertices at 45 degrees + k 360/n on r = R)
+    R, n = 1.0, 80
+    width = 2*math.pi/n
+    for angle, r in ((math.pi/4 + width/2, 0.5), (math.pi/4, 0.9),
+                     (2.0, 0.99), (-3.0, 0.3)):
+        point = (r*math.cos(angle), r*math.sin(angle), 0.0)
+        k = math.floor((angle - math.pi/4)/width)
+        a = [R*math.cos(math.pi/4 + k*width), R*math.sin(math.pi/4 + k*width)]
+        b = [R*math.cos(math.pi/4 + (k + 1)*width),
+             R*math.sin(math.pi/4 + (k + 1)*width)]
+        edge = (b[0] - a[0], b[1] - a[1])
+        cross = edge[0]*(point[1] - a[1]) - edge[1]*(point[0] - a[0])
+        expected = abs(cross)/math.hypot(*edge)
+        assert pipe.wall_distance([point], R, n)[0] == \
+            pytest.approx(expected, rel=1e-12)
+
+
+def test_profiles_chi2_by_hand():
+    assert pipe.profiles_chi2(([10, 5], 100), ([10, 5], 100)) == (0.0, 2)
+    # (0.1 - 0.2)^2/(10/100^2 + 20/100^2) = 0.01/0.003
+    chi2, dof = pipe.profiles_chi2(([10, 0], 100), ([20, 0], 100))
+    assert chi2 == pytest.approx(10/3) and dof == 1

@@ -57,6 +57,8 @@ Commands:
                              over the inlet, one per injector)
   pipePositions [CASE]       pipeDeposition's positions files (uniform in
                              the pipe, one per injector)
+  pipeTimeStep [CASE]        pipeDeposition's time-step independence
+                             (after Allrun.timeStep): log.timeStep
   channelPositions [CASE]    channelResuspension's positions files (above
                              the floor, one per injector)
   channelTop [CASE]          channelResuspension's top wall speed at the
@@ -110,6 +112,10 @@ def main(argv=None):
     if command == "channelTop" and len(arguments) <= 1:
         from .tutorials import channel_resuspension
         channel_resuspension.set_top(*arguments)
+        return 0
+    if command == "pipeTimeStep" and len(arguments) <= 1:
+        from .tutorials import pipe_deposition
+        pipe_deposition.run_time_step(*arguments)
         return 0
     if command == "pipePositions" and len(arguments) <= 1:
         from .tutorials import pipe_deposition

@@ -24,8 +24,15 @@ V+ <= 1.2e-3 tau+^2 (half Papavergos and Hedley's fit to twice Liu and
 Agarwal's, correlations.py) with a standard error of at most 15 % of V+;
 tau+ 30-100 within 0.05-0.25.
 
+Time-step independence (Allrun.timeStep, runs/timeStep/dt1 and dt10:
+tau+ 5 at the tutorial's step and a tenth of it): the two V+ differ by
+less than 2 sqrt(SE1^2 + SE2^2), and the airborne droplets' profiles over
+wall distance (PROFILE_EDGES, y+ 0.5-100) by a chi-square below its 99th
+percentile: log.timeStep.
+
     adhesiveWallPost pipePositions [CASE]
     adhesiveWallPost pipeDeposition [CASE]
+    adhesiveWallPost pipeTimeStep [CASE]
 """
 
 import math
@@ -41,6 +48,7 @@ MAX_RELATIVE_SE = 0.15
 COLUMNS = ["tauPlus", "d", "model", "Vplus", "VplusSE", "captureParcels",
            "low", "high", "verdict"]
 # The units of COLUMNS, in order: -, m, -, -, -, -, -, -, -
+PROFILE_EDGES = [0.5, 1, 2, 4, 8, 15, 30, 60, 100]
 
 
 # --- The parcels' start positions ------------------------------------------
@@ -255,3 +263,86 @@ def run(case="."):
         f.write(text + "\n")
     print(text)
     plot(os.path.join(case, "Vplus.png"), rows)
+
+
+# --- Time-step independence --------------------------------------------------
+
+def wall_distance(points, R, n_wall):
+    """The distance of points (x, y, z) to the wall polygon of n_wall faces
+    with its corners on r = R, the O-grid's first corner at 45 degrees:
+    R cos(pi/n_wall) - r cos(theta - theta_face), theta_face the angle of
+    the middle of the face the point's angle falls on."""
+    width = 2*math.pi/n_wall
+    found = []
+    for x, y, _ in points:
+        theta = math.atan2(y, x) - math.pi/4
+        middle = (math.floor(theta/width) + 0.5)*width
+        found.append(R*math.cos(width/2)
+                     - math.hypot(x, y)*math.cos(theta - middle))
+    return found
+
+
+def profile(run, u_star, nu):
+    """The airborne parcels' counts per PROFILE_EDGES bin of y+ at the
+    run's last time, and their total."""
+    from .. import aerosol
+    R = float(foam.value("system/blockMeshDict", "R", case=run))
+    n_wall = 4*int(foam.value("system/blockMeshDict", "nAround", case=run))
+    points = aerosol.positions(run, foam.latest_time(run))
+    yplus = [y*u_star/nu for y in wall_distance(points, R, n_wall)]
+    counts = [sum(1 for y in yplus if a <= y < b)
+              for a, b in zip(PROFILE_EDGES[:-1], PROFILE_EDGES[1:])]
+    return counts, len(points)
+
+
+def profiles_chi2(first, second):
+    """Chi-square of two binned profiles (counts, totals) against one
+    shared shape: sum (c1/N1 - c2/N2)^2/(c1/N1^2 + c2/N2^2) over the bins
+    that hold parcels, and its degrees of freedom."""
+    (c1, n1), (c2, n2) = first, second
+    chi2, dof = 0.0, 0
+    for a, b in zip(c1, c2):
+        variance = a/n1**2 + b/n2**2
+        if variance > 0:
+            chi2 += (a/n1 - b/n2)**2/variance
+            dof += 1
+    return chi2, dof
+
+
+def time_step(case="."):
+    """The comparison's lines and whether it passes."""
+    pipe = Pipe(case)
+    u_star = friction_velocity(case)
+    found = {}
+    for name in ("dt1", "dt10"):
+        run = os.path.join(case, "runs", "timeStep", name)
+        rows = model_rows(pipe, run, JUDGED, u_star)
+        if len(rows) != 1:
+            raise NotThisCase(f"{run}: {len(rows)} size classes, not one")
+        found[name] = rows[0], profile(run, u_star, pipe.nu)
+    (r1, p1), (r10, p10) = found["dt1"], found["dt10"]
+    difference = abs(r1[3] - r10[3])
+    allowed = 2*math.hypot(r1[4], r10[4])
+    chi2, dof = profiles_chi2(p1, p10)
+    limit = deposition.chi2_quantile99(dof)
+    errors_ok = all(r[4] <= 0.05*r[3] for r in (r1, r10))
+    lines = [f"tau+ {r1[0]:.3g}: V+ {r1[3]:.4g} +- {r1[4]:.2g} at the "
+             f"tutorial's step, {r10[3]:.4g} +- {r10[4]:.2g} at a tenth: "
+             f"difference {difference:.2g} against {allowed:.2g}",
+             f"profiles (y+ {PROFILE_EDGES[0]}-{PROFILE_EDGES[-1]}, "
+             f"{dof} bins): chi-square {chi2:.3g} against {limit:.3g}"]
+    if not errors_ok:
+        lines.append("standard errors above 5 % of V+: more droplets")
+    return lines, errors_ok and difference < allowed and chi2 < limit
+
+
+def run_time_step(case="."):
+    try:
+        lines, passed = time_step(case)
+    except (NotThisCase, KeyError, ValueError, FileNotFoundError) as err:
+        raise stop("pipeTimeStep", err,
+                   "runs/timeStep/dt1 and dt10 of Allrun.timeStep")
+    lines.append("time-step independence: " + ("pass" if passed else "FAIL"))
+    with open(os.path.join(case, "log.timeStep"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
