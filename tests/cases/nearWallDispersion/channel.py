@@ -7,15 +7,18 @@ U+ Reichardt's law (kappa 0.41), k+ 1.9 up to y+ 80 falling to 1.3 at the
 centre, epsilon from Kallio & Reeks' T_L+ 51.47 (as tests/unit's channel),
 nut 0 at the walls.
 
-    channel.py mesh          system/blockMeshDict
+    channel.py mesh [CELLS]  system/blockMeshDict (CELLS of equal size a
+                             half: a wall-function mesh)
     channel.py fields N      0/U, k, epsilon, nut (after writeCellCentres)
                              and N tracer positions uniform in the channel
     channel.py lower N       N tracer positions uniform in the lower half
                              (below y+ 176: one processor's of two)
-    channel.py bins TIME     the concentration relative to the mean and its
-                             binomial SE per wall-distance bin (y+ 0-1, 1-3,
-                             3-10, 10-30, 30-60, 60-100, 100-180), both
-                             halves folded: 'a-b value se' a line
+    channel.py bins TIME...  the concentration relative to the mean and its
+                             SE per wall-distance bin (y+ 0-1, 1-3, 3-10,
+                             10-30, 30-60, 60-100, 100-180), both halves
+                             folded: 'a b value se' a line; one time: the
+                             binomial SE, several: the mean over them and
+                             its SE from their spread
 """
 import math
 import random
@@ -40,8 +43,10 @@ def grading():
     return r**(N - 1)
 
 
-def mesh():
-    g = grading()
+def mesh(cells=N):
+    """system/blockMeshDict: N cells a half graded from 0.5 wall units, or
+    the number of cells given, of equal size (a wall-function mesh)."""
+    g = grading() if cells == N else 1.0
     v = lambda layer, i: 4*layer + i
     quad = lambda *ids: "(%s)" % " ".join(str(i) for i in ids)
     with open("system/blockMeshDict", "w") as f:
@@ -54,7 +59,7 @@ def mesh():
             ids = [v(layer, 0), v(layer, 1), v(layer + 1, 1), v(layer + 1, 0),
                    v(layer, 3), v(layer, 2), v(layer + 1, 2), v(layer + 1, 3)]
             f.write("hex %s (2 %d 1) simpleGrading (1 %r 1)\n"
-                    % (quad(*ids), N, ratio))
+                    % (quad(*ids), cells, ratio))
         f.write(");\nboundary (\n")
         f.write("walls { type wall; faces (%s %s); }\n"
                 % (quad(0, 1, 2, 3), quad(8, 11, 10, 9)))
@@ -126,17 +131,36 @@ def positions(n, top):
         f.write(")\n")
 
 
-def bins(time):
+def bins(*times):
+    """Per bin (EDGES): the concentration relative to the mean and its
+    standard error. One time: the binomial SE of its parcels; several (at
+    least 10, each more than the Lagrangian integral time after the last):
+    their mean and the standard error of the mean over them (block means,
+    so that the parcels' correlation in time is taken into account)."""
     from adhesivewall import aerosol
-    yp = [min(p[1], 2*DELTA - p[1])/LP for p in aerosol.positions(".", time)]
-    n = len(yp)
-    for a, b in zip(EDGES[:-1], EDGES[1:]):
-        share = (b - a)/180
-        count = sum(1 for y in yp if a <= y < b)
-        print(a, b, count/(share*n), math.sqrt((1 - share)/(share*n)))
+    per_time = []
+    for time in times:
+        yp = [min(p[1], 2*DELTA - p[1])/LP
+              for p in aerosol.positions(".", time)]
+        n = len(yp)
+        row = []
+        for a, b in zip(EDGES[:-1], EDGES[1:]):
+            share = (b - a)/180
+            count = sum(1 for y in yp if a <= y < b)
+            row.append((count/(share*n), math.sqrt((1 - share)/(share*n))))
+        per_time.append(row)
+    for i, (a, b) in enumerate(zip(EDGES[:-1], EDGES[1:])):
+        values = [row[i][0] for row in per_time]
+        mean = sum(values)/len(values)
+        if len(values) == 1:
+            se = per_time[0][i][1]
+        else:
+            var = sum((v - mean)**2 for v in values)/(len(values) - 1)
+            se = math.sqrt(var/len(values))
+        print(a, b, mean, se)
 
 
 if __name__ == "__main__":
-    {"mesh": lambda: mesh(), "fields": lambda: fields(int(sys.argv[2])),
+    {"mesh": lambda: mesh(*[int(c) for c in sys.argv[2:3]]), "fields": lambda: fields(int(sys.argv[2])),
      "lower": lambda: positions(int(sys.argv[2]), 0.98*DELTA),
-     "bins": lambda: bins(sys.argv[2])}[sys.argv[1]]()
+     "bins": lambda: bins(*sys.argv[2:])}[sys.argv[1]]()

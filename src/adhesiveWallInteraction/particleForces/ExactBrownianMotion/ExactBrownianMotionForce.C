@@ -132,6 +132,11 @@ void Foam::ExactBrownianMotionForce<CloudType>::checkCloud
             << "step is drawn for a fixed time step (set adjustTimeStep no "
             << "and keep deltaT)" << nl << exit(FatalError);
     }
+    // Moved in sub-cycles of the time step (a colliding cloud's collision
+    // subCycles; checked at every completed step, as the cloud may move
+    // its parcels over the whole step first): a sub-cycle would complete
+    // the step of the draws
+    aerosolForces::checkWholeSteps(this->owner(), "exactBrownianMotion");
 }
 
 
@@ -204,10 +209,6 @@ Foam::forceSuSp Foam::ExactBrownianMotionForce<CloudType>::calcNonCoupled
     {
         checkCloud(trackTime);
     }
-    // Moved in sub-cycles of the time step (a colliding cloud's collision
-    // subCycles; every call: it may move its parcels over whole steps
-    // first): a sub-cycle would complete the step of the draws
-    aerosolForces::checkWholeSteps(this->owner(), "exactBrownianMotion");
 
     // The parcel's state: its tTurb counts the draws (drawsTaken) and its
     // UTurb holds the velocity V0 the current draw starts from

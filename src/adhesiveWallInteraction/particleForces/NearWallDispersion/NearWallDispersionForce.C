@@ -160,6 +160,48 @@ void Foam::NearWallDispersionForce<CloudType>::cacheFields(const bool store)
     k_ = turbulence.model()->k();
     epsilon_ = turbulence.model()->epsilon();
     gradK_ = fvc::grad(k_());
+    checkFlow();
+}
+
+
+template<class CloudType>
+void Foam::NearWallDispersionForce<CloudType>::checkFlow() const
+{
+    const CloudType& cloud = this->owner();
+    // A wall-resolved mesh: the walls' first cell centres in the viscous
+    // sublayer, where the mean velocity interpolated to the wall is the
+    // law of the wall's (the near-wall statistics come from the fits on
+    // any mesh; the mean velocity seen is OpenFOAM's interpolation)
+    for (const fvPatch& patch : this->mesh().boundary())
+    {
+        if (!isA<wallPolyPatch>(patch.patch()))
+        {
+            continue;
+        }
+        scalar largest = 0;
+        for (const label celli : patch.faceCells())
+        {
+            const scalar nu = cloud.mu()[celli]/cloud.rho()[celli];
+            largest = max
+            (
+                largest,
+                units_->y()[celli]*units_->uStar()[celli]/nu
+            );
+        }
+        reduce(largest, maxOp<scalar>());
+        if (largest > maxFirstCellYPlus)
+        {
+            FatalErrorInFunction
+                << "nearWallDispersion needs a wall-resolved mesh: the "
+                << "cell centres next to wall patch " << patch.name()
+                << " lie at y+ up to " << largest << ", and must lie at "
+                << "y+ <= " << maxFirstCellYPlus << " (the viscous "
+                << "sublayer, where the carrier velocity interpolated to "
+                << "the wall follows the law of the wall; a wall-function "
+                << "mesh is not supported: refine the walls' first cells)"
+                << exit(FatalError);
+        }
+    }
 }
 
 
@@ -265,6 +307,19 @@ brachDunn::PathStep Foam::NearWallDispersionForce<CloudType>::walk
 
 
 template<class CloudType>
+std::uint64_t Foam::NearWallDispersionForce<CloudType>::walkKey
+(
+    const typename CloudType::parcelType& p
+)
+{
+    return
+        (static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.origProc()))
+        << 32)
+      | static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.origId()));
+}
+
+
+template<class CloudType>
 const brachDunn::PathStep&
 Foam::NearWallDispersionForce<CloudType>::walkOfSubStep
 (
@@ -276,10 +331,7 @@ Foam::NearWallDispersionForce<CloudType>::walkOfSubStep
     const scalar normalVelocity
 ) const
 {
-    const std::uint64_t key =
-        (static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.origProc()))
-        << 32)
-      | static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.origId()));
+    const std::uint64_t key = walkKey(p);
     const scalar trackTime = this->owner().solution().trackTime();
     const scalar startFraction = p.stepFraction() - dt/trackTime;
     auto found = walks_.find(key);
@@ -337,7 +389,8 @@ Foam::forceSuSp Foam::NearWallDispersionForce<CloudType>::calcNonCoupled
         FatalErrorInFunction
             << "nearWallDispersion works in wall units: the carrier's "
             << "friction velocity at the wall nearest to cell " << p.cell()
-            << " (parcel " << p.origId() << ") is " << flow.uStar
+            << " (parcel " << p.origId() << " of processor "
+            << p.origProc() << ") is " << flow.uStar
             << " (no shear at that wall)" << exit(FatalError);
     }
     // The walk's own path of the parcel starts with its wall-normal
