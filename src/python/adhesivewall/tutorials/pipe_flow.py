@@ -32,57 +32,31 @@ import re
 
 import numpy as np
 
+from .. import foam
 from . import stop
+from .pipe_deposition import friction_velocity
 
 KAPPA, B = 0.41, 5.2        # the log law's constants
 NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 
 
-def entry(path, key):
-    """The number after `key` at the start of a line of a dictionary."""
-    with open(path) as f:
-        m = re.search(r"^\s*%s\s+(%s)\s*;" % (key, NUMBER), f.read(), re.M)
-    if not m:
-        raise ValueError("no %s in %s" % (key, path))
-    return float(m.group(1))
+def field(path, patch=None):
+    """A field's internal values, or its values on `patch`, as an (n, 1) or
+    (n, 3) array (foam.parse; a uniform internal value is not expected)."""
+    parsed = foam.parse(foam.body(path))
+    value = parsed["internalField"] if patch is None \
+        else parsed["boundaryField"][patch]["value"]
+    if value[0] != "nonuniform":
+        raise ValueError(f"{path}: {value[:2]} is not a list of values")
+    return np.array(value[-1], dtype=float).reshape(len(value[-1]), -1)
 
 
-def values(text, start, ncells):
-    """The field values from the `uniform ...` or `nonuniform List<...>`
-    that follows text[start]: an (n, 1) or (n, 3) array."""
-    m = re.compile(r"\b(nonuniform\s+List<\w+>\s*(\d+)\s*\(|uniform\s+"
-                   r"(\([^)]*\)|%s))" % NUMBER).search(text, start)
-    if m.group(2) is None:                          # uniform
-        v = [float(x) for x in re.findall(NUMBER, m.group(3))]
-        return np.tile(v, (ncells, 1))
-    body = text[m.end():text.index("\n)", m.end())]
-    v = np.array(re.findall(NUMBER, body), dtype=float)
-    return v.reshape(int(m.group(2)), -1)
-
-
-def field(path, patch=None, ncells=None):
-    """A field's internal values, or its values on `patch`."""
-    with open(path) as f:
-        text = f.read()
-    if patch is None:
-        return values(text, text.index("internalField"), ncells)
-    start = text.index("boundaryField")
-    start = re.compile(r"\n\s*%s\s*\{" % patch).search(text, start).end()
-    return values(text, text.index("value", start), ncells)
-
-
-def latest_time(case):
-    times = []
-    for name in os.listdir(case):
-        try:
-            if float(name) > 0 \
-                    and os.path.isfile(os.path.join(case, name, "U")):
-                times.append((float(name), name))
-        except ValueError:
-            pass
-    if not times:
+def flow_time(case):
+    """The last time folder, which Allrun.flow leaves with U in it."""
+    time = foam.latest_time(case)
+    if float(time) <= 0 or not os.path.isfile(os.path.join(case, time, "U")):
         raise ValueError("no flow written in %s (run ./Allrun.flow)" % case)
-    return max(times)[1]
+    return time
 
 
 def spalding(yplus):
@@ -120,23 +94,21 @@ def run(case="."):
 
 def report(case="."):
     path = lambda *p: os.path.join(case, *p)
-    R = entry(path("system", "blockMeshDict"), "R")
-    nu = entry(path("constant", "transportProperties"), "nu")
-    with open(path("constant", "fvOptions")) as f:
-        ubar = np.array(re.search(r"Ubar\s*\(([^)]*)\)", f.read())
-                        .group(1).split(), dtype=float)
+    R = float(foam.value("system/blockMeshDict", "R", case=case))
+    nu = float(foam.value("constant/transportProperties", "nu", case=case))
+    ubar = np.array(str(foam.value("constant/fvOptions",
+                                   "meanVelocityForce/Ubar", case=case))
+                    .strip("() ").split(), dtype=float)
     with open(path("log.simpleFoam")) as f:
         gradients = re.findall(r"pressure gradient = (%s)" % NUMBER, f.read())
     G = float(gradients[-1])
-    time = latest_time(case)
+    time = flow_time(case)
 
     C = field(path(time, "C"))
-    ncells = len(C)
-    U = field(path(time, "U"), ncells=ncells)
-    k = field(path(time, "k"), ncells=ncells)[:, 0]
+    U = field(path(time, "U"))
+    k = field(path(time, "k"))[:, 0]
     faces = field(path(time, "C"), "wall")
-    tau = field(path(time, "wallShearStress"), "wall", len(faces))
-    wall_yplus = field(path(time, "yPlus"), "wall", len(faces))[:, 0]
+    wall_yplus = field(path(time, "yPlus"), "wall")[:, 0]
 
     # Distance to the wall: to the plane of the nearest wall face (the
     # wall's faces are chords, their normals radial in x-y)
@@ -149,7 +121,7 @@ def report(case="."):
     axis = ubar/ub
     re_d = ub*2*R/nu
     ustar = math.sqrt(G*R/2)
-    ustar_tau = math.sqrt(np.linalg.norm(tau, axis=1).mean())
+    ustar_tau = friction_velocity(case, time)
     print("pipeDeposition flow, time %s: R = %g m, nu = %g m^2/s, Ub = %g m/s,"
           " Re = %.0f" % (time, R, nu, ub, re_d))
     print("u* from the pressure gradient (G = %.6g m/s^2, u* = sqrt(G R/2)):"
