@@ -10,6 +10,12 @@
 //   identity of the design), also when the path reaches the wall and the
 //   fluctuation is held from there;
 // - a particle of long relaxation time keeps its wall-normal velocity;
+// - the noise keeps its direction in the global axes when the wall's frame
+//   turns: a walk taken in a frame turned half round the streamwise axis
+//   (the frame past a channel's centre plane) from the same global w is
+//   the same walk (the noise drawn in the frame's own axes turned with it,
+//   and the tracers that crossed the plane were sent back: 1.04 of the
+//   mean at the centre of case.nearWallDispersion's channel);
 // - a step of zero length changes nothing; bad settings name themselves.
 
 #include "SeenPath.H"
@@ -18,6 +24,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -142,6 +149,34 @@ TEST(SeenPath, HeavyParticleKeepsItsWallNormalVelocity)
     );
     EXPECT_NEAR(r.y, 20 + 0.2*10, 1e-8*2);
     EXPECT_NEAR(r.normalVelocity, 0.2, 1e-8);
+}
+
+
+TEST(SeenPath, NoiseKeepsItsDirectionWhenTheFrameTurns)
+{
+    // At the channel's centre (y+ 180) k is level: the statistics are the
+    // same on both sides, so the two frames see the same walk
+    const NearWallSettings nearWall;
+    const PathSettings path;
+    const WallFrame turned{{1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+    for (int k = 0; k < 20; ++k)
+    {
+        const Vector3 w{0.3, 0.8 - 0.1*k, -0.2};
+        CounterRandom random(4, std::uint64_t(k), 0, 0);
+        const PathStep a = seenVelocityPath
+        (
+            {w, 0, 0}, channelFlow(180), nearWall, path, 10, random
+        );
+        CounterRandom again(4, std::uint64_t(k), 0, 0);
+        const PathStep b = seenVelocityPath
+        (
+            {turned.local(w), 0, 0, turned}, channelFlow(180), nearWall,
+            path, 10, again
+        );
+        const Vector3 d = a.meanFluctuation - turned.global(b.meanFluctuation);
+        EXPECT_LT(std::abs(d.x) + std::abs(d.y) + std::abs(d.z), 1e-12);
+        EXPECT_NEAR(b.y - 180, 180 - a.y, 1e-9);
+    }
 }
 
 

@@ -111,7 +111,10 @@ PathStep seenVelocityPath
         {
             s = seenStatistics(flowAlong(flow, y0, r.y), settings);
             h = subStep(s, path, h);
-            const Vector3 xi{random.normal(), random.normal(), random.normal()};
+            const Vector3 xi = start.axes.local
+            (
+                {random.normal(), random.normal(), random.normal()}
+            );
             r.w = seenVelocityStep(r.w, s, start.tauP, h, xi);
             u = {s.sigma.x*r.w.x, s.sigma.y*r.w.y, s.sigma.z*r.w.z};
             // The wall-normal fluctuation at the middle of the sub-step's

@@ -234,13 +234,14 @@ Foam::NearWallDispersionForce<CloudType>::flowAt
     const vector slip =
         tauP*(1 - td.rhoc()/p.rho())*this->owner().g().value();
     const vector& gradK = gradK_()[celli];
+    const scalar kHere = max(kCell + (gradK & offset), 1e-3*kCell);
     return
     {
         y*uStar/nu,
         uStar,
         nu,
-        max(kCell + (gradK & offset), 1e-3*kCell),
-        epsilon_()[celli],
+        kHere,
+        kCell > 0 ? epsilon_()[celli]*kHere/kCell : epsilon_()[celli],
         frame.local(toCore(gradK)),
         frame.local(toCore(slip))
     };
@@ -254,7 +255,8 @@ brachDunn::PathStep Foam::NearWallDispersionForce<CloudType>::walk
     brachDunn::FlowAtParticle flow,
     const brachDunn::WallFrame& frame,
     const scalar tauP,
-    const scalar normalVelocity
+    const scalar normalVelocity,
+    const label stepIndex
 ) const
 {
     using namespace nearWallDispersion;
@@ -268,27 +270,38 @@ brachDunn::PathStep Foam::NearWallDispersionForce<CloudType>::walk
     const std::uint64_t id =
         static_cast<std::uint64_t>(static_cast<std::int64_t>(p.origId()));
 
-    // The state: w at the step's start (UTurb, its components along the
+    // The state: w at the walk's start (UTurb, its components along the
     // wall's frame's axes given as a global vector, so that a parcel whose
     // nearest wall changes keeps the direction of its fluctuation) and the
-    // wall distance there (tTurb > 0); 0 a new parcel (w drawn from the
-    // stationary law's fluctuation), < 0 a step completed (this sub-step
-    // starts the next)
+    // wall distance there (tTurb > 0: where the parcel ended its last
+    // step); 0 a new parcel (w drawn from the stationary law, the walk
+    // starting where the parcel is)
     vector& w = compat::walkVector(p);
     scalar& start = compat::walkScalar(p);
-    if (start == 0)
+    const scalar y = flow.yPlus*flow.nu/flow.uStar;
+    if (start <= 0)
     {
         brachDunn::CounterRandom random(seed_, proc, id, 2*step + 1);
         w = vector(random.normal(), random.normal(), random.normal());
-    }
-    if (start <= 0)
-    {
-        const scalar y = flow.uStar > 0 ? flow.yPlus*flow.nu/flow.uStar : 0;
         start = max(y, VSMALL);
+    }
+    // k at the start, along the wall normal from the parcel (epsilon
+    // keeping the cell's k/epsilon)
+    const scalar kHere = flow.k;
+    flow.k = max(flow.k + flow.gradK.y*(start - y), 1e-3*flow.k);
+    if (kHere > 0)
+    {
+        flow.epsilon *= flow.k/kHere;
     }
     flow.yPlus = start*flow.uStar/flow.nu;
 
-    brachDunn::CounterRandom random(seed_, proc, id, 2*step);
+    // The walk's numbers are keyed on the index of the time step it is
+    // taken in (restored on a restart from uniform/time): the walk that the
+    // step completing before it predicts is the one it takes
+    brachDunn::CounterRandom random
+    (
+        seed_, proc, id, 2*static_cast<std::uint64_t>(stepIndex)
+    );
     const scalar trackTime = this->owner().solution().trackTime();
     return checkedInput::coreCall
     (
@@ -297,7 +310,8 @@ brachDunn::PathStep Foam::NearWallDispersionForce<CloudType>::walk
         {
             return brachDunn::seenVelocityPath
             (
-                {frame.local(toCore(w)), normalVelocity, tauP}, flow,
+                {frame.local(toCore(w)), normalVelocity, tauP, frame},
+                flow,
                 settings_, path_,
                 trackTime, random
             );
@@ -334,6 +348,9 @@ Foam::NearWallDispersionForce<CloudType>::walkOfSubStep
     const std::uint64_t key = walkKey(p);
     const scalar trackTime = this->owner().solution().trackTime();
     const scalar startFraction = p.stepFraction() - dt/trackTime;
+    // A sub-step of the rounding after the step completed takes the next
+    // step's walk (the one its completion started)
+    const bool completed = startFraction >= 1 - 1e-9;
     auto found = walks_.find(key);
     if
     (
@@ -344,7 +361,12 @@ Foam::NearWallDispersionForce<CloudType>::walkOfSubStep
     {
         lastWalk last
         {
-            p.cell(), 0, walk(p, flow, frame, tauP, normalVelocity)
+            p.cell(), 0,
+            walk
+            (
+                p, flow, frame, tauP, normalVelocity,
+                this->mesh().time().timeIndex() + (completed ? 1 : 0)
+            )
         };
         found = walks_.insert_or_assign(key, last).first;
     }
@@ -400,13 +422,25 @@ Foam::forceSuSp Foam::NearWallDispersionForce<CloudType>::calcNonCoupled
         walkOfSubStep(p, dt, flow, frame, tauP, normalVelocity);
     value.Su() = Sp*toFoam(frame.global(walked.meanFluctuation));
 
-    // The sub-step that completes the step keeps the end's w for the next
-    // (a sub-step of the rounding left after it does not)
+    // The sub-step that completes the step keeps the end's w and the wall
+    // distance where the step ends (a sub-step of the rounding left after
+    // it does not), and the parcel goes into the next step with the mean
+    // of the walk from there: the walk that step takes
     const scalar trackTime = this->owner().solution().trackTime();
     if (p.stepFraction() >= 1 - 1e-9 && dt > 1e-9*trackTime)
     {
         compat::walkVector(p) = toFoam(frame.global(walked.w));
-        compat::walkScalar(p) = -1;
+        compat::walkScalar(p) = max(flow.yPlus*flow.nu/flow.uStar, VSMALL);
+        const brachDunn::PathStep next = walk
+        (
+            p, flow, frame, tauP, normalVelocity,
+            this->mesh().time().timeIndex() + 1
+        );
+        value.Su() = Sp*toFoam(frame.global(next.meanFluctuation));
+        walks_.insert_or_assign
+        (
+            walkKey(p), lastWalk{p.cell(), p.stepFraction(), next}
+        );
     }
     return value;
 }
