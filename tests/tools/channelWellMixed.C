@@ -32,6 +32,13 @@ int main(int argc, char** argv)
     const double dt = std::atof(argv[2]);
     const int steps = std::atoi(argv[3]);
     const double tauP = argc > 4 ? std::atof(argv[4]) : 0;
+    if (n < 1 || !(dt > 0) || steps < 0 || !(tauP >= 0))
+    {
+        std::fprintf(stderr, "channelWellMixed: n >= 1, dtPlus > 0, steps"
+                     " >= 0 and tauPlus >= 0, not %s %s %s %g\n", argv[1],
+                     argv[2], argv[3], tauP);
+        return 1;
+    }
     PathSettings path;
     path.lower = 0;
     path.upper = testCases::halfHeight;

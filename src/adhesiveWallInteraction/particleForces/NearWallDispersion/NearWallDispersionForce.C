@@ -260,11 +260,7 @@ brachDunn::PathStep Foam::NearWallDispersionForce<CloudType>::walk
 ) const
 {
     using namespace nearWallDispersion;
-    const std::uint64_t step = max
-    (
-        brachDunn::textCounter(compat::timeName(this->mesh().time())),
-        std::uint64_t(1)
-    );
+    const std::uint64_t step = static_cast<std::uint64_t>(stepIndex);
     const std::uint64_t proc =
         static_cast<std::uint64_t>(static_cast<std::int64_t>(p.origProc()));
     const std::uint64_t id =
@@ -274,15 +270,18 @@ brachDunn::PathStep Foam::NearWallDispersionForce<CloudType>::walk
     // wall's frame's axes given as a global vector, so that a parcel whose
     // nearest wall changes keeps the direction of its fluctuation) and the
     // wall distance there (tTurb > 0: where the parcel ended its last
-    // step); 0 a new parcel (w drawn from the stationary law, the walk
-    // starting where the parcel is)
+    // step); 0 a new parcel (w drawn from the stationary law); < 0 (an
+    // earlier version's completed step) the walk starts where it is
     vector& w = compat::walkVector(p);
     scalar& start = compat::walkScalar(p);
     const scalar y = flow.yPlus*flow.nu/flow.uStar;
-    if (start <= 0)
+    if (start == 0)
     {
         brachDunn::CounterRandom random(seed_, proc, id, 2*step + 1);
         w = vector(random.normal(), random.normal(), random.normal());
+    }
+    if (start <= 0)
+    {
         start = max(y, VSMALL);
     }
     // k at the start, along the wall normal from the parcel (epsilon
@@ -298,10 +297,7 @@ brachDunn::PathStep Foam::NearWallDispersionForce<CloudType>::walk
     // The walk's numbers are keyed on the index of the time step it is
     // taken in (restored on a restart from uniform/time): the walk that the
     // step completing before it predicts is the one it takes
-    brachDunn::CounterRandom random
-    (
-        seed_, proc, id, 2*static_cast<std::uint64_t>(stepIndex)
-    );
+    brachDunn::CounterRandom random(seed_, proc, id, 2*step);
     const scalar trackTime = this->owner().solution().trackTime();
     return checkedInput::coreCall
     (
@@ -376,6 +372,53 @@ Foam::NearWallDispersionForce<CloudType>::walkOfSubStep
 
 
 template<class CloudType>
+bool Foam::NearWallDispersionForce<CloudType>::completesStep
+(
+    const typename CloudType::parcelType& p,
+    const scalar dt
+) const
+{
+    // The sub-step that reaches the step's end, not one of the rounding
+    // left after it
+    const scalar trackTime = this->owner().solution().trackTime();
+    return
+        p.stepFraction() >= 1 - 1e-9
+     && p.stepFraction() - dt/trackTime < 1 - 1e-9;
+}
+
+
+template<class CloudType>
+Foam::vector Foam::NearWallDispersionForce<CloudType>::startNextStep
+(
+    const typename CloudType::parcelType& p,
+    const brachDunn::FlowAtParticle& flow,
+    const brachDunn::WallFrame& frame,
+    const scalar tauP,
+    const scalar normalVelocity,
+    const brachDunn::PathStep& walked
+) const
+{
+    using namespace nearWallDispersion;
+    // The end's w and the wall distance where the step ends are the next
+    // step's state; the parcel goes into the next step with the mean of
+    // the walk from there (the next step takes that walk again at its
+    // first sub-step, from the same state with the same numbers)
+    compat::walkVector(p) = toFoam(frame.global(walked.w));
+    compat::walkScalar(p) = max(flow.yPlus*flow.nu/flow.uStar, VSMALL);
+    const brachDunn::PathStep next = walk
+    (
+        p, flow, frame, tauP, normalVelocity,
+        this->mesh().time().timeIndex() + 1
+    );
+    walks_.insert_or_assign
+    (
+        walkKey(p), lastWalk{p.cell(), p.stepFraction(), next}
+    );
+    return toFoam(frame.global(next.meanFluctuation));
+}
+
+
+template<class CloudType>
 Foam::forceSuSp Foam::NearWallDispersionForce<CloudType>::calcNonCoupled
 (
     const typename CloudType::parcelType& p,
@@ -422,25 +465,10 @@ Foam::forceSuSp Foam::NearWallDispersionForce<CloudType>::calcNonCoupled
         walkOfSubStep(p, dt, flow, frame, tauP, normalVelocity);
     value.Su() = Sp*toFoam(frame.global(walked.meanFluctuation));
 
-    // The sub-step that completes the step keeps the end's w and the wall
-    // distance where the step ends (a sub-step of the rounding left after
-    // it does not), and the parcel goes into the next step with the mean
-    // of the walk from there: the walk that step takes
-    const scalar trackTime = this->owner().solution().trackTime();
-    if (p.stepFraction() >= 1 - 1e-9 && dt > 1e-9*trackTime)
+    if (completesStep(p, dt))
     {
-        compat::walkVector(p) = toFoam(frame.global(walked.w));
-        compat::walkScalar(p) = max(flow.yPlus*flow.nu/flow.uStar, VSMALL);
-        const brachDunn::PathStep next = walk
-        (
-            p, flow, frame, tauP, normalVelocity,
-            this->mesh().time().timeIndex() + 1
-        );
-        value.Su() = Sp*toFoam(frame.global(next.meanFluctuation));
-        walks_.insert_or_assign
-        (
-            walkKey(p), lastWalk{p.cell(), p.stepFraction(), next}
-        );
+        value.Su() =
+            Sp*startNextStep(p, flow, frame, tauP, normalVelocity, walked);
     }
     return value;
 }
