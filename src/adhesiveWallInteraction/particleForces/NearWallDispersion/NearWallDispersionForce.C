@@ -342,11 +342,10 @@ Foam::NearWallDispersionForce<CloudType>::walkOfSubStep
 ) const
 {
     const std::uint64_t key = walkKey(p);
-    const scalar trackTime = this->owner().solution().trackTime();
-    const scalar startFraction = p.stepFraction() - dt/trackTime;
+    const scalar startFraction = subStepStart(p, dt);
     // A sub-step of the rounding after the step completed takes the next
     // step's walk (the one its completion started)
-    const bool completed = startFraction >= 1 - 1e-9;
+    const bool completed = startFraction >= stepEnd;
     auto found = walks_.find(key);
     if
     (
@@ -380,10 +379,18 @@ bool Foam::NearWallDispersionForce<CloudType>::completesStep
 {
     // The sub-step that reaches the step's end, not one of the rounding
     // left after it
-    const scalar trackTime = this->owner().solution().trackTime();
-    return
-        p.stepFraction() >= 1 - 1e-9
-     && p.stepFraction() - dt/trackTime < 1 - 1e-9;
+    return p.stepFraction() >= stepEnd && subStepStart(p, dt) < stepEnd;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::NearWallDispersionForce<CloudType>::subStepStart
+(
+    const typename CloudType::parcelType& p,
+    const scalar dt
+) const
+{
+    return p.stepFraction() - dt/this->owner().solution().trackTime();
 }
 
 
