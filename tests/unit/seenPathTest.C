@@ -16,6 +16,8 @@
 //   the same walk (the noise drawn in the frame's own axes turned with it,
 //   and the tracers that crossed the plane were sent back: 1.04 of the
 //   mean at the centre of case.nearWallDispersion's channel);
+// - where the time scales are tiny (a still region's RANS k) a step takes
+//   at most maxSubSteps sub-steps and says so;
 // - a step of zero length changes nothing; bad settings name themselves.
 
 #include "SeenPath.H"
@@ -193,6 +195,39 @@ TEST(SeenPath, ZeroStepChangesNothing)
     EXPECT_EQ(r.w.y, -0.4);
     EXPECT_EQ(r.normalVelocity, 0.3);
     EXPECT_EQ(r.subSteps, 0);
+}
+
+
+TEST(SeenPath, AStillRegionTakesAtMostMaxSubSteps)
+{
+    // Above the blend where the RANS k is a millionth of the channel's
+    // (epsilon kept): T_L about 3e-5 wall time units, so that a step of 10
+    // would want some 10^7 sub-steps of 0.025 T; it takes maxSubSteps of
+    // dt/maxSubSteps, says so, and its fluctuation stays of the (tiny) rms
+    const NearWallSettings nearWall;
+    FlowAtParticle still = channelFlow(150);
+    still.k *= 1e-6;
+    still.gradK = {0, 0, 0};
+    PathSettings path;
+    CounterRandom random(3, 1, 2, 0);
+    const PathStep r = seenVelocityPath
+    (
+        {{0.5, -1, 0.2}, 0, 0}, still, nearWall, path, 10, random
+    );
+    EXPECT_LE(r.subSteps, path.maxSubSteps + 1);
+    EXPECT_GE(r.subSteps, path.maxSubSteps - 1);
+    EXPECT_TRUE(r.atLeastSubStep);
+    const double rms = std::sqrt(2*still.k/3);
+    EXPECT_LT(mag(r.meanFluctuation), 5*rms);
+
+    // The channel's own flow at the same place wants fewer: not bound
+    CounterRandom again(3, 1, 2, 0);
+    const PathStep free = seenVelocityPath
+    (
+        {{0.5, -1, 0.2}, 0, 0}, channelFlow(150), nearWall, path, 10, again
+    );
+    EXPECT_FALSE(free.atLeastSubStep);
+    EXPECT_LT(free.subSteps, path.maxSubSteps);
 }
 
 

@@ -99,7 +99,8 @@ PathStep seenVelocityPath
     requirePositive("nu", flow.nu);
 
     const double y0 = flow.yPlus*flow.nu/flow.uStar;
-    PathStep r{start.w, {0, 0, 0}, y0, start.normalVelocity, 0};
+    PathStep r{start.w, {0, 0, 0}, y0, start.normalVelocity, 0, false};
+    const double least = dt/path.maxSubSteps;
     SeenStatistics s = seenStatistics(flow, settings);
     Vector3 u{s.sigma.x*r.w.x, s.sigma.y*r.w.y, s.sigma.z*r.w.z};
     bool followed = y0 >= path.lower && y0 <= path.upper;
@@ -107,10 +108,13 @@ PathStep seenVelocityPath
     while (t < dt)
     {
         double h = dt - t;
-        if (followed && r.subSteps < path.maxSubSteps)
+        if (followed)
         {
             s = seenStatistics(flowAlong(flow, y0, r.y), settings);
-            h = subStep(s, path, h);
+            const double wanted = subStep(s, path, h);
+            r.atLeastSubStep =
+                r.atLeastSubStep || (wanted < least && least < h);
+            h = std::min(h, std::max(wanted, least));
             const Vector3 xi = start.axes.local
             (
                 {random.normal(), random.normal(), random.normal()}

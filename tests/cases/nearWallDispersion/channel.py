@@ -19,6 +19,10 @@ nut 0 at the walls.
                              folded: 'a b value se' a line; one time: the
                              binomial SE, several: the mean over them and
                              its SE from their spread
+    channel.py seen TIME...  the fluid velocity seen at y+ 1, 5, 10, 30,
+                             100 per wall-frame component against the
+                             model's rms: 'a b component samples mean se
+                             rms se' a line (seen())
 """
 import math
 import random
@@ -160,7 +164,73 @@ def bins(*times):
         print(a, b, mean, se)
 
 
+SEEN_BINS = [(0.5, 1.5), (4, 6), (8, 12), (25, 35), (90, 110)]
+
+
+def _lagrangian(time, name):
+    from adhesivewall import foam
+    return foam.list_file("%s/lagrangian/kinematicCloud/%s" % (time, name))
+
+
+def _seen_moments(time):
+    """Per bin of SEEN_BINS and wall-frame component (streamwise, normal,
+    spanwise): the samples' count, mean w, mean w^2 and their standard
+    errors (the parcels are independent). w is the state a parcel ended
+    its step with (UTurb, the frame's components given along the global
+    axes) at its wall distance then (tTurb); the frame of the lower wall
+    is (x, y, z), of the upper (x, -y, -z)."""
+    from adhesivewall import aerosol
+    ws = _lagrangian(time, "UTurb")
+    ys = _lagrangian(time, "tTurb")
+    sides = [1 if p[1] < DELTA else -1
+             for p in aerosol.positions(".", time)]
+    rows = []
+    for a, b in SEEN_BINS:
+        picked = [(w[0], s*w[1], s*w[2]) for w, y, s in zip(ws, ys, sides)
+                  if a <= y/LP < b]
+        row = []
+        for i in range(3):
+            v = [w[i] for w in picked]
+            n = len(v)
+            m1 = sum(v)/n
+            m2 = sum(x*x for x in v)/n
+            s1 = math.sqrt(sum((x - m1)**2 for x in v)/(n - 1)/n)
+            s2 = math.sqrt(sum((x*x - m2)**2 for x in v)/(n - 1)/n)
+            row.append((n, m1, s1, m2, s2))
+        rows.append(row)
+    return rows
+
+
+def seen(*times):
+    """The fluid velocity seen against the model's prescribed rms: per bin
+    of SEEN_BINS and wall-frame component, 'a b component samples mean
+    se rms se' a line, the mean and rms of u_i/sigma_i = w_i, the state's
+    normalised velocity seen (u_i = sigma_i(y) w_i at the parcel's wall
+    distance: rms(u_i) = sigma_i there exactly when w_i has unit rms, and
+    well-mixed tracers see a zero mean). One time: the SE from the
+    parcels' spread; several: the mean over them and its SE from their
+    spread (block means)."""
+    per_time = [_seen_moments(t) for t in times]
+    for j, (a, b) in enumerate(SEEN_BINS):
+        for i, name in enumerate(("streamwise", "normal", "spanwise")):
+            cells = [rows[j][i] for rows in per_time]
+            n = sum(c[0] for c in cells)
+            if len(cells) == 1:
+                _, m1, s1, m2, s2 = cells[0]
+            else:
+                k = len(cells)
+                m1 = sum(c[1] for c in cells)/k
+                m2 = sum(c[3] for c in cells)/k
+                s1 = math.sqrt(sum((c[1] - m1)**2 for c in cells)
+                               /(k - 1)/k)
+                s2 = math.sqrt(sum((c[3] - m2)**2 for c in cells)
+                               /(k - 1)/k)
+            rms = math.sqrt(m2)
+            print(a, b, name, n, m1, s1, rms, s2/(2*rms))
+
+
 if __name__ == "__main__":
     {"mesh": lambda: mesh(*[int(c) for c in sys.argv[2:3]]), "fields": lambda: fields(int(sys.argv[2])),
      "lower": lambda: positions(int(sys.argv[2]), 0.98*DELTA),
-     "bins": lambda: bins(*sys.argv[2:])}[sys.argv[1]]()
+     "bins": lambda: bins(*sys.argv[2:]),
+     "seen": lambda: seen(*sys.argv[2:])}[sys.argv[1]]()

@@ -40,14 +40,15 @@ Foam::NearWallDispersionForce<CloudType>::NearWallDispersionForce
     ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
     seed_(0),
     units_(nullptr),
-    checked_(false)
+    checked_(false),
+    leastSubSteps_(0)
 {
     const dictionary& coeffs = checkedInput::withKnownKeywords
     (
         this->coeffs(),
         {
             "seed", "blendFrom", "blendTo", "C0", "crossing",
-            "timeFraction", "rmsChange"
+            "timeFraction", "rmsChange", "maxSubSteps"
         },
         "nearWallDispersion"
     );
@@ -63,6 +64,10 @@ Foam::NearWallDispersionForce<CloudType>::NearWallDispersionForce
         checkedInput::readNumber(coeffs, "timeFraction", path_.timeFraction);
     path_.rmsChange =
         checkedInput::readNumber(coeffs, "rmsChange", path_.rmsChange);
+    path_.maxSubSteps = static_cast<int>
+    (
+        checkedInput::readCount(coeffs, "maxSubSteps", path_.maxSubSteps)
+    );
     checkedInput::coreCall(coeffs, [&] { settings_.check(); });
     checkedInput::coreCall(coeffs, [&] { path_.check(); });
     Info<< "    nearWallDispersion: seed " << label(seed_)
@@ -70,7 +75,8 @@ Foam::NearWallDispersionForce<CloudType>::NearWallDispersionForce
         << settings_.blendTo << ", C0 " << settings_.C0
         << ", crossing " << settings_.crossing
         << ", timeFraction " << path_.timeFraction
-        << ", rmsChange " << path_.rmsChange << endl;
+        << ", rmsChange " << path_.rmsChange
+        << ", maxSubSteps " << path_.maxSubSteps << endl;
 }
 
 
@@ -86,35 +92,9 @@ Foam::NearWallDispersionForce<CloudType>::NearWallDispersionForce
     path_(f.path_),
     units_(nullptr),
     checked_(false),
-    walks_()
+    walks_(),
+    leastSubSteps_(0)
 {}
-
-
-template<class CloudType>
-void Foam::NearWallDispersionForce<CloudType>::checkCloud() const
-{
-    const word dispersion = this->owner().dispersion().type();
-    if (dispersion != "none")
-    {
-        FatalErrorInFunction
-            << "nearWallDispersion keeps its state in the parcels' UTurb "
-            << "and tTurb: the cloud's dispersionModel must be none, not "
-            << dispersion << exit(FatalError);
-    }
-    for (const auto& force : this->owner().forces())
-    {
-        const word type = force.type();
-        if (type == "exactBrownianMotion" || type == "BrownianMotion")
-        {
-            FatalErrorInFunction
-                << "nearWallDispersion and " << type << " both keep a "
-                << "parcel's state in UTurb and tTurb: select one of them "
-                << "(Brownian and turbulent motion together are not built "
-                << "yet)" << exit(FatalError);
-        }
-    }
-    checked_ = true;
-}
 
 
 template<class CloudType>
@@ -123,6 +103,7 @@ void Foam::NearWallDispersionForce<CloudType>::cacheFields(const bool store)
     walks_.clear();
     if (!store)
     {
+        reportLeastSubSteps();
         k_.clear();
         epsilon_.clear();
         gradK_.clear();
@@ -165,47 +146,6 @@ void Foam::NearWallDispersionForce<CloudType>::cacheFields(const bool store)
 
 
 template<class CloudType>
-void Foam::NearWallDispersionForce<CloudType>::checkFlow() const
-{
-    const CloudType& cloud = this->owner();
-    // A wall-resolved mesh: the walls' first cell centres in the viscous
-    // sublayer, where the mean velocity interpolated to the wall is the
-    // law of the wall's (the near-wall statistics come from the fits on
-    // any mesh; the mean velocity seen is OpenFOAM's interpolation)
-    for (const fvPatch& patch : this->mesh().boundary())
-    {
-        if (!isA<wallPolyPatch>(patch.patch()))
-        {
-            continue;
-        }
-        scalar largest = 0;
-        for (const label celli : patch.faceCells())
-        {
-            const scalar nu = cloud.mu()[celli]/cloud.rho()[celli];
-            largest = max
-            (
-                largest,
-                units_->y()[celli]*units_->uStar()[celli]/nu
-            );
-        }
-        reduce(largest, maxOp<scalar>());
-        if (largest > maxFirstCellYPlus)
-        {
-            FatalErrorInFunction
-                << "nearWallDispersion needs a wall-resolved mesh: the "
-                << "cell centres next to wall patch " << patch.name()
-                << " lie at y+ up to " << largest << ", and must lie at "
-                << "y+ <= " << maxFirstCellYPlus << " (the viscous "
-                << "sublayer, where the carrier velocity interpolated to "
-                << "the wall follows the law of the wall; a wall-function "
-                << "mesh is not supported: refine the walls' first cells)"
-                << exit(FatalError);
-        }
-    }
-}
-
-
-template<class CloudType>
 brachDunn::FlowAtParticle
 Foam::NearWallDispersionForce<CloudType>::flowAt
 (
@@ -226,22 +166,23 @@ Foam::NearWallDispersionForce<CloudType>::flowAt
     const scalar y = max(units_->y()[celli] + (offset & n), scalar(0));
     const scalar uStar = units_->uStar()[celli];
     const scalar nu = muc/td.rhoc();
-    const scalar kCell = k_()[celli];
     // The mean slip of crossing trajectories (Csanady 1963): the settling
     // drift tau_p (1 - rho_c/rho_p) g, not the instantaneous relative
     // velocity, which holds the fluctuation itself and would make the time
     // scale depend on it
     const vector slip =
         tauP*(1 - td.rhoc()/p.rho())*this->owner().g().value();
+    // k at the parcel by the cell's gradient, not yet bounded (the walk
+    // takes it on to where it starts and bounds it once there), and the
+    // cell's epsilon
     const vector& gradK = gradK_()[celli];
-    const scalar kHere = max(kCell + (gradK & offset), 1e-3*kCell);
     return
     {
         y*uStar/nu,
         uStar,
         nu,
-        kHere,
-        kCell > 0 ? epsilon_()[celli]*kHere/kCell : epsilon_()[celli],
+        k_()[celli] + (gradK & offset),
+        epsilon_()[celli],
         frame.local(toCore(gradK)),
         frame.local(toCore(slip))
     };
@@ -284,13 +225,14 @@ brachDunn::PathStep Foam::NearWallDispersionForce<CloudType>::walk
     {
         start = max(y, VSMALL);
     }
-    // k at the start, along the wall normal from the parcel (epsilon
-    // keeping the cell's k/epsilon)
-    const scalar kHere = flow.k;
-    flow.k = max(flow.k + flow.gradK.y*(start - y), 1e-3*flow.k);
-    if (kHere > 0)
+    // k at the start, along the wall normal from the parcel, at least a
+    // thousandth of the cell's (bounded once, here), epsilon keeping the
+    // cell's k/epsilon
+    const scalar kCell = k_()[p.cell()];
+    flow.k = max(flow.k + flow.gradK.y*(start - y), 1e-3*kCell);
+    if (kCell > 0)
     {
-        flow.epsilon *= flow.k/kHere;
+        flow.epsilon *= flow.k/kCell;
     }
     flow.yPlus = start*flow.uStar/flow.nu;
 
@@ -471,6 +413,10 @@ Foam::forceSuSp Foam::NearWallDispersionForce<CloudType>::calcNonCoupled
     const brachDunn::PathStep& walked =
         walkOfSubStep(p, dt, flow, frame, tauP, normalVelocity);
     value.Su() = Sp*toFoam(frame.global(walked.meanFluctuation));
+    if (walked.atLeastSubStep)
+    {
+        ++leastSubSteps_;
+    }
 
     if (completesStep(p, dt))
     {
@@ -479,6 +425,9 @@ Foam::forceSuSp Foam::NearWallDispersionForce<CloudType>::calcNonCoupled
     }
     return value;
 }
+
+
+#include "NearWallDispersionForceChecks.C"
 
 
 // ************************************************************************* //
