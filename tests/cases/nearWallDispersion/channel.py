@@ -19,6 +19,8 @@ nut 0 at the walls.
                              folded: 'a b value se' a line; one time: the
                              binomial SE, several: the mean over them and
                              its SE from their spread
+    channel.py cloud [D]     constant/turbulenceProperties and the cloud's
+                             properties: particles of D m (0.1 um)
     channel.py seen TIME...  the fluid velocity seen at y+ 1, 5, 10, 30,
                              100 per wall-frame component against the
                              model's rms: 'a b component samples mean se
@@ -135,6 +137,58 @@ def positions(n, top):
         f.write(")\n")
 
 
+TURBULENCE = """FoamFile { version 2.0; format ascii; class dictionary; object turbulenceProperties; }
+simulationType RAS;
+RAS { RASModel kEpsilon; turbulence on; printCoeffs off; }
+"""
+
+CLOUD = """FoamFile { version 2.0; format ascii; class dictionary; object kinematicCloudProperties; }
+solution
+{
+    active true; coupled false; transient yes; cellValueSourceCorrection off;
+    maxCo 1;
+    sourceTerms { schemes {} }
+    interpolationSchemes { rho cell; U cell; mu cell; }
+    integrationSchemes { U analytical; }
+}
+constantProperties { rho0 1000; }
+subModels
+{
+    particleForces
+    {
+        sphereDrag;
+        nearWallDispersion { seed 1; }
+    }
+    injectionModels
+    {
+        tracers
+        {
+            type manualInjection; massTotal 0; parcelBasisType fixed;
+            nParticle 1; SOI 0; positionsFile "positions"; U0 (0 0 0);
+            sizeDistribution { type fixedValue; fixedValueDistribution { value 1e-7; } }
+        }
+    }
+    dispersionModel none;
+    patchInteractionModel standardWallInteraction;
+    standardWallInteractionCoeffs { type rebound; e 1; mu 0; }
+    surfaceFilmModel none; stochasticCollisionModel none; collisionModel none;
+}
+cloudFunctions {}
+"""
+
+
+def cloud(d=None):
+    """constant/turbulenceProperties (the frozen RAS flow's kEpsilon) and
+    constant/kinematicCloudProperties: particles of diameter d [m] (1000
+    kg/m^3, at rest, from constant/positions) with sphereDrag and
+    nearWallDispersion, rebound walls, whole steps (no collisions)."""
+    with open("constant/turbulenceProperties", "w") as f:
+        f.write(TURBULENCE)
+    with open("constant/kinematicCloudProperties", "w") as f:
+        f.write(CLOUD if d is None
+                else CLOUD.replace("value 1e-7;", "value %r;" % d))
+
+
 def bins(*times):
     """Per bin (EDGES): the concentration relative to the mean and its
     standard error. One time: the binomial SE of its parcels; several (at
@@ -233,4 +287,5 @@ if __name__ == "__main__":
     {"mesh": lambda: mesh(*[int(c) for c in sys.argv[2:3]]), "fields": lambda: fields(int(sys.argv[2])),
      "lower": lambda: positions(int(sys.argv[2]), 0.98*DELTA),
      "bins": lambda: bins(*sys.argv[2:]),
-     "seen": lambda: seen(*sys.argv[2:])}[sys.argv[1]]()
+     "seen": lambda: seen(*sys.argv[2:]),
+     "cloud": lambda: cloud(*[float(d) for d in sys.argv[2:3]])}[sys.argv[1]]()
