@@ -4,6 +4,7 @@
 #include "AdhesiveWallInteraction.H"
 #include "AdhesiveWallSurfaceContactRefused.H"
 #include "SlipSphereDragForce.H"
+#include "NearWallDispersionRefused.H"
 #include "ExactBrownianMotionRefused.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicKinematicMPPICCloud);
@@ -12,6 +13,9 @@ makePatchInteractionModelType(AdhesiveWallInteraction, basicKinematicMPPICCloud)
 // saying so
 makeCloudFunctionObjectType(AdhesiveWallSurfaceContactRefused, basicKinematicMPPICCloud);
 makeParticleForceModelType(SlipSphereDragForce, basicKinematicMPPICCloud);
+// nearWallDispersion is built for kinematic and colliding clouds: selected
+// here, it stops naming the force and why (NearWallDispersionRefused.H)
+makeParticleForceModelType(NearWallDispersionRefused, basicKinematicMPPICCloud);
 // exactBrownianMotion is not built for MPPIC clouds (their packing models
 // move parcels outside the sub-step loop the exact step is written for):
 // selected there, it stops saying so

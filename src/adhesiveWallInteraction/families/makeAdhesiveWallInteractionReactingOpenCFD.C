@@ -4,9 +4,13 @@
 #include "AdhesiveWallInteraction.H"
 #include "AdhesiveWallSurfaceContact.H"
 #include "SlipSphereDragForce.H"
+#include "NearWallDispersionRefused.H"
 #include "ExactBrownianMotionForce.H"
 
 makePatchInteractionModelType(AdhesiveWallInteraction, basicReactingCloud);
 makeCloudFunctionObjectType(AdhesiveWallSurfaceContact, basicReactingCloud);
 makeParticleForceModelType(SlipSphereDragForce, basicReactingCloud);
+// nearWallDispersion is built for kinematic and colliding clouds: selected
+// here, it stops naming the force and why (NearWallDispersionRefused.H)
+makeParticleForceModelType(NearWallDispersionRefused, basicReactingCloud);
 makeParticleForceModelType(ExactBrownianMotionForce, basicReactingCloud);
