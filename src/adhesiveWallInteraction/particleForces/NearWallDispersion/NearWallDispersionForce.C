@@ -137,6 +137,14 @@ void Foam::NearWallDispersionForce<CloudType>::cacheFields(const bool store)
             << "nearWallDispersion needs a wall patch: the mesh of cloud "
             << cloud.name() << " has none" << exit(FatalError);
     }
+    if (this->mesh().moving())
+    {
+        FatalErrorInFunction
+            << "nearWallDispersion takes the walls' distances, normals and "
+            << "friction velocities computed once per carrier velocity "
+            << "field: the mesh of cloud " << cloud.name() << " moves. "
+            << "Run it on a static mesh" << exit(FatalError);
+    }
     units_ = &wallUnits::New(cloud.U(), cloud.rho(), cloud.mu());
     k_ = turbulence.model()->k();
     epsilon_ = turbulence.model()->epsilon();
