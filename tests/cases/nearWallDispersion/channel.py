@@ -9,7 +9,8 @@ nut 0 at the walls.
 
     channel.py mesh [CELLS]  system/blockMeshDict (CELLS of equal size a
                              half: a wall-function mesh)
-    channel.py fields N      0/U, k, epsilon, nut (after writeCellCentres)
+    channel.py fields N      0/U, k, epsilon, nut, omega, v2, f (after
+                             writeCellCentres)
                              and N tracer positions uniform in the channel
     channel.py lower N       N tracer positions uniform in the lower half
                              (below y+ 176: one processor's of two)
@@ -122,6 +123,15 @@ def fields(n):
                 [repr(v) for v in eps], fixed % "1e-12")
     write_field("nut", "volScalarField", "[0 2 -1 0 0 0 0]",
                 [repr(0.09*a*a/b) for a, b in zip(k, eps)], fixed % "0")
+    # The fields other RAS models read beside k and epsilon, so that the
+    # same k and epsilon reach the model under each: kOmegaSST's omega
+    # (its epsilon is 0.09 k omega), v2f's v2 and f
+    write_field("omega", "volScalarField", "[0 0 -1 0 0 0 0]",
+                [repr(b/(0.09*a)) for a, b in zip(k, eps)], fixed % "1e4")
+    write_field("v2", "volScalarField", "[0 2 -2 0 0 0 0]",
+                [repr(2*a/3) for a in k], fixed % "1e-12")
+    write_field("f", "volScalarField", "[0 0 -1 0 0 0 0]",
+                ["0"]*len(k), fixed % "0")
     positions(n, 2*DELTA)
 
 
